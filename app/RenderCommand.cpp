@@ -1,0 +1,132 @@
+// `vectorfluid render SCENE ...`: run a scene headless and write files (DESIGN §3).
+#include "app/Commands.h"
+#include "app/RenderOptions.h"
+#include "model/SceneFile.h"
+#include "model/SceneRunner.h"
+#include "render/Exporter.h"
+
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QTextStream>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace vf::app {
+
+namespace {
+
+struct RunTotals {
+    qint64 steps = 0;
+    qint64 vertexSteps = 0;  // sum over steps of the vertex count after the step
+    double simSeconds = 0.0; // wall time inside simulation steps only
+    bool limitHit = false;
+};
+
+void fail(const QString& line)
+{
+    QTextStream(stderr) << "vectorfluid: " << line << '\n';
+}
+
+QString writeStats(const QString& path, const model::Drawing& drawing, const RunTotals& totals, std::size_t vertices)
+{
+    QJsonArray regions;
+    for (const model::DrawnRegion& r : drawing.regions) {
+        qint64 count = 0;
+        double area = 0.0, length = 0.0;
+        for (const sim::Polygon& p : r.contours) {
+            count += qint64(p.size());
+            area += sim::signedArea(p);
+            length += sim::perimeter(p);
+        }
+        regions.append(QJsonObject{{"name", r.name}, {"vertices", count}, {"area", area}, {"perimeter", length}});
+    }
+    const QJsonObject root{
+        {"regions", regions},
+        {"totals", QJsonObject{{"steps", totals.steps},
+                               {"vertices", qint64(vertices)},
+                               {"vertex_steps", totals.vertexSteps},
+                               {"sim_seconds", totals.simSeconds}}},
+        {"limit_reached", totals.limitHit},
+    };
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(root).toJson()) < 0 || !file.commit())
+        return QStringLiteral("%1: %2").arg(path, file.errorString());
+    return {};
+}
+
+QString framePath(const QString& dir, qint64 step)
+{
+    return QDir(dir).filePath(QStringLiteral("frame-%1.svg").arg(step, 6, 10, QLatin1Char('0')));
+}
+
+} // namespace
+
+int renderCommand(const QStringList& arguments)
+{
+    QString error;
+    const auto options = parseRenderOptions(arguments, error);
+    if (!options) {
+        fail(error);
+        return BadInput;
+    }
+    const model::SceneReadResult read = model::readSceneFile(options->scene);
+    if (!read.ok()) {
+        fail(read.error);
+        return BadInput;
+    }
+    if (options->backend == QLatin1String("opencl"))
+        QTextStream(stderr) << "vectorfluid: the OpenCL backend is not built yet; using the reference backend\n";
+    if (!options->framesDir.isEmpty() && !QDir().mkpath(options->framesDir)) {
+        fail(QStringLiteral("%1: cannot create the frames folder").arg(options->framesDir));
+        return BadInput;
+    }
+
+    const qint64 steps = options->steps.value_or(read.scene.time.steps);
+    const double dt = options->dt.value_or(read.scene.time.dt);
+    RunTotals totals;
+    try {
+        model::SceneRunner runner(read.scene);
+        auto writeFrame = [&](qint64 step) {
+            if (options->framesDir.isEmpty() || step % options->every != 0)
+                return QString();
+            return render::exportDrawing(runner.drawing(), framePath(options->framesDir, step), options->exportOptions);
+        };
+        error = writeFrame(0);
+        while (error.isEmpty() && totals.steps < steps && !totals.limitHit) {
+            const auto start = std::chrono::steady_clock::now();
+            totals.limitHit = runner.step(dt).vertexLimitReached;
+            totals.simSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            ++totals.steps;
+            totals.vertexSteps += qint64(runner.simulation().vertexCount());
+            error = writeFrame(totals.steps);
+        }
+        const model::Drawing drawing = runner.drawing();
+        for (const QString& out : options->outputs) {
+            if (error.isEmpty() && (error = render::exportDrawing(drawing, out, options->exportOptions)).isEmpty())
+                QTextStream(stdout) << "wrote " << out << '\n';
+        }
+        if (error.isEmpty() && !options->statsFile.isEmpty())
+            error = writeStats(options->statsFile, drawing, totals, runner.simulation().vertexCount());
+    } catch (const std::exception& e) {
+        error = QStringLiteral("%1: %2").arg(options->scene, QString::fromUtf8(e.what()));
+    }
+    if (!error.isEmpty()) {
+        fail(error);
+        return BadInput;
+    }
+    if (totals.limitHit) {
+        fail(QStringLiteral("%1: max_vertices (%2) reached at step %3 of %4; the files hold the state at that step")
+                 .arg(options->scene)
+                 .arg(read.scene.tracking.maxVertices)
+                 .arg(totals.steps)
+                 .arg(steps));
+        return LimitHit;
+    }
+    return Done;
+}
+
+} // namespace vf::app

@@ -1,0 +1,137 @@
+#pragma once
+// The scene file (*.vfscene) as data: what docs/scene-format.md describes, already validated.
+// SceneReader fills it from JSON, SceneWriter writes it back, SceneRunner plays it.
+#include "sim/Geometry.h"
+
+#include <QColor>
+#include <QString>
+
+#include <cstdint>
+#include <variant>
+#include <vector>
+
+namespace vf::model {
+
+struct Canvas {
+    double width = 1.0;
+    double height = 1.0;
+    QColor background = QColor(255, 255, 255);
+
+    friend bool operator==(const Canvas&, const Canvas&) = default;
+};
+
+struct FlowSpec {
+    enum class Type { Fluid, Analytic };
+    Type type = Type::Fluid;
+    // fluid
+    int gridX = 64;
+    int gridY = 64;
+    double viscosity = 5e-4;
+    bool maccormack = true;  // "advection": "maccormack" | "semi-lagrangian"
+    // analytic: muparser expressions in x, y, t (canvas units, seconds)
+    QString u;
+    QString v;
+
+    friend bool operator==(const FlowSpec&, const FlowSpec&) = default;
+};
+
+struct TimeSpec {
+    double dt = 0.002;
+    std::int64_t steps = 500;
+
+    friend bool operator==(const TimeSpec&, const TimeSpec&) = default;
+};
+
+struct TrackingSpec {
+    double maxSpacing = 0.004;
+    bool adaptive = true;
+    bool proximity = true;
+    bool areaCorrection = false;
+    std::int64_t maxVertices = 4'000'000;
+
+    friend bool operator==(const TrackingSpec&, const TrackingSpec&) = default;
+};
+
+// Equality is exact (a read of a written scene must give back the same numbers).
+struct CircleShape {
+    sim::Vec2 center;
+    double radius = 0.0;
+    friend bool operator==(const CircleShape&, const CircleShape&) = default;
+};
+struct EllipseShape {
+    sim::Vec2 center;
+    sim::Vec2 radii;
+    friend bool operator==(const EllipseShape&, const EllipseShape&) = default;
+};
+struct RectShape {
+    sim::Vec2 topLeft;
+    sim::Vec2 size;
+    friend bool operator==(const RectShape&, const RectShape&) = default;
+};
+struct PolygonShape {
+    sim::Polygon points;
+    friend bool operator==(const PolygonShape&, const PolygonShape&) = default;
+};
+using Shape = std::variant<CircleShape, EllipseShape, RectShape, PolygonShape>;
+
+// The closed contours of a shape, edges no longer than maxSpacing, each with positive
+// sim::signedArea like every contour the engine creates (clockwise as seen on screen, y down).
+std::vector<sim::Polygon> shapeContours(const Shape& shape, double maxSpacing);
+// An upper bound on the vertices shapeContours(shape, maxSpacing) creates, computed without
+// creating them; a double so that absurd inputs cannot overflow. The reader uses it to refuse
+// scenes whose starting shapes alone exceed tracking.max_vertices.
+double shapeVertexBound(const Shape& shape, double maxSpacing);
+
+struct RegionSpec {
+    QString name;
+    QColor color;
+    bool visible = true;
+    Shape shape;
+
+    friend bool operator==(const RegionSpec&, const RegionSpec&) = default;
+};
+
+struct StylusStroke {
+    double radius = 0.03;
+    std::vector<sim::Vec2> points;  // positions
+    std::vector<double> times;      // one per point, non-decreasing, seconds of simulated time
+
+    friend bool operator==(const StylusStroke&, const StylusStroke&) = default;
+};
+
+struct DropStroke {
+    double time = 0.0;
+    sim::Vec2 center;
+    double radius = 0.0;
+    QColor color;
+    QString name;  // empty: "drop N"
+
+    friend bool operator==(const DropStroke&, const DropStroke&) = default;
+};
+
+using Stroke = std::variant<StylusStroke, DropStroke>;
+
+struct Scene {
+    Canvas canvas;
+    FlowSpec flow;
+    TimeSpec time;
+    TrackingSpec tracking;
+    std::vector<RegionSpec> regions;
+    std::vector<Stroke> strokes;
+
+    friend bool operator==(const Scene&, const Scene&) = default;
+};
+
+// Documented limits (docs/scene-format.md); the reader rejects anything beyond them.
+namespace limits {
+inline constexpr int maxGrid = 1024;
+inline constexpr int minGrid = 4;
+inline constexpr std::int64_t maxSteps = 100'000'000;
+inline constexpr std::int64_t maxVertices = 1'000'000'000;
+inline constexpr std::size_t maxRegions = 100'000;
+inline constexpr std::size_t maxPolygonPoints = 10'000'000;
+inline constexpr std::size_t maxStrokes = 1'000'000;
+inline constexpr double maxCanvasSize = 1e6;
+} // namespace limits
+
+} // namespace vf::model

@@ -1,0 +1,50 @@
+#pragma once
+// Plays a scene: builds a simulation from it, feeds its regions, drops and stylus strokes in at
+// their times, and hands out the picture. Used by the headless command line and the app.
+#include "model/Drawing.h"
+#include "model/Scene.h"
+#include "sim/Simulation.h"
+
+#include <functional>
+#include <memory>
+
+namespace vf::model {
+
+using SimulationFactory = std::function<std::unique_ptr<sim::Simulation>(const sim::SimulationSettings&)>;
+
+sim::SimulationSettings simulationSettings(const Scene& scene);
+
+class SceneRunner {
+public:
+    // Throws std::invalid_argument (one line) when the backend refuses the scene's settings.
+    explicit SceneRunner(Scene scene, const SimulationFactory& factory = sim::makeReferenceSimulation);
+
+    const Scene& scene() const { return m_scene; }
+    const sim::Simulation& simulation() const { return *m_simulation; }
+    std::int64_t stepsDone() const { return m_steps; }
+
+    // One step of the scene's dt (or `dt` when given): drops whose time has come land first, then
+    // the stylus strokes' share of this interval acts on the fluid, then the simulation steps.
+    sim::StepReport step(double dt);
+
+    Drawing drawing() const;
+
+private:
+    void applyDrops(double from, double to);
+    void applyStylus(double from, double to);
+
+    struct RegionLook {
+        QString name;
+        QColor color;
+        bool visible = true;
+    };
+
+    Scene m_scene;
+    std::unique_ptr<sim::Simulation> m_simulation;
+    std::vector<RegionLook> m_looks;  // indexed by simulation region
+    std::vector<bool> m_dropDone;     // per stroke
+    int m_dropsLanded = 0;
+    std::int64_t m_steps = 0;
+};
+
+} // namespace vf::model

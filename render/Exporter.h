@@ -1,0 +1,23 @@
+#pragma once
+// One entry point for every export format; the format follows the file suffix.
+#include "model/Drawing.h"
+
+#include <QString>
+
+namespace vf::render {
+
+struct ExportOptions {
+    bool bezier = true;          // fit cubic Béziers (SVG/PDF/EPS); false writes vertices as they are
+    double bezierTolerance = 0;  // canvas units; 0 picks the documented default
+    double pageWidth = 576.0;    // points (1/72 in) for the canvas width; height keeps the aspect
+    double dpi = 150.0;          // PNG pixels per inch of the page
+    bool background = true;      // paint the canvas background
+};
+
+// Writes `drawing` to `path` (.svg .pdf .eps .png), atomically: a temporary file renamed into
+// place only when complete. Returns an empty string, or one line saying what went wrong.
+QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options);
+
+bool isExportSuffix(const QString& path);
+
+} // namespace vf::render

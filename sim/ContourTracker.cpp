@@ -1,0 +1,292 @@
+#include "sim/ContourTracker.h"
+
+#include "sim/AreaCorrection.h"
+#include "sim/SpacingField.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace vf::sim {
+
+Vec2 rungeKutta4(const Flow& flow, Vec2 p, double t, double dt)
+{
+    const double half = 0.5 * dt;
+    const Vec2 k1 = flow.velocity(p, t);
+    const Vec2 k2 = flow.velocity(p + half * k1, t + half);
+    const Vec2 k3 = flow.velocity(p + half * k2, t + half);
+    const Vec2 k4 = flow.velocity(p + dt * k3, t + dt);
+    return p + (dt / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+namespace {
+
+// A contour as a doubly linked ring during refinement, so a split or a collapse costs O(1)
+// wherever it happens. Compacted back into the contour's arrays at the end, in ring order.
+class Ring {
+public:
+    Ring(const Contour& c, bool timeRewinding)
+        : m_position(c.positions), m_previous(c.previous), m_spacing(c.spacing), m_rewind(timeRewinding)
+    {
+        const int n = int(m_position.size());
+        m_next.resize(n);
+        m_before.resize(n);
+        for (int i = 0; i < n; ++i) {
+            m_next[i] = (i + 1) % n;
+            m_before[i] = (i + n - 1) % n;
+        }
+        m_alive = n;
+    }
+
+    int alive() const { return m_alive; }
+    int next(int v) const { return m_next[v]; }
+    int before(int v) const { return m_before[v]; }
+
+    double length(int a, int b) const { return glm::distance(m_position[a], m_position[b]); }
+    // The spacing an edge must respect: the mean of its endpoints' d_i.
+    double spacing(int a, int b) const { return 0.5 * (m_spacing[a] + m_spacing[b]); }
+    // A vertex placed between a and b takes the smaller d: with the mean, one of the two halves of
+    // an edge just over its spacing would fall under half of its own, and split and collapse would
+    // undo each other forever.
+    double insertedSpacing(int a, int b) const { return std::min(m_spacing[a], m_spacing[b]); }
+
+    double turning(int v) const
+    {
+        const Vec2 e0 = m_position[v] - m_position[m_before[v]];
+        const Vec2 e1 = m_position[m_next[v]] - m_position[v];
+        return std::abs(std::atan2(e0.x * e1.y - e0.y * e1.x, glm::dot(e0, e1)));
+    }
+
+    // Eq. 2: the new vertex is the midpoint of the edge *at the start of the motion*, moved by it.
+    int splitAfter(int a, const MotionMap& map)
+    {
+        const int b = m_next[a];
+        const Vec2 start = 0.5 * (m_previous[a] + m_previous[b]);
+        const int m = int(m_position.size());
+        m_position.push_back(m_rewind ? map(start) : 0.5 * (m_position[a] + m_position[b]));
+        m_previous.push_back(start);
+        m_spacing.push_back(insertedSpacing(a, b));
+        m_next.push_back(b);
+        m_before.push_back(a);
+        m_next[a] = m;
+        m_before[b] = m;
+        ++m_alive;
+        return m;
+    }
+
+    void unlink(int v)
+    {
+        m_next[m_before[v]] = m_next[v];
+        m_before[m_next[v]] = m_before[v];
+        --m_alive;
+    }
+
+    // Moves v to the time-rewound midpoint of its neighbours (eq. 2), as if v had been removed and
+    // the merged edge split again. Where the curve between them is lopsided, so that one half would
+    // come out short, bisection along the rewound edge finds a point far enough from both.
+    void recentre(int v, const MotionMap& map)
+    {
+        const int a = m_before[v], b = m_next[v];
+        const Vec2 pa = m_position[a], pb = m_position[b];
+        const double dv = insertedSpacing(a, b);
+        const double needA = 0.25 * (m_spacing[a] + dv), needB = 0.25 * (m_spacing[b] + dv);
+        auto at = [&](double s) { return m_previous[a] + s * (m_previous[b] - m_previous[a]); };
+        auto place = [&](double s) { return m_rewind ? map(at(s)) : pa + s * (pb - pa); };
+        double lo = 0.0, hi = 1.0, s = 0.5;
+        Vec2 x = place(s);
+        for (int i = 0; i < 40; ++i) {
+            const double toA = glm::distance(x, pa), toB = glm::distance(x, pb);
+            if (toA >= needA && toB >= needB)
+                break;
+            (toA < toB ? lo : hi) = s;
+            s = 0.5 * (lo + hi);
+            x = place(s);
+        }
+        m_previous[v] = at(s);
+        m_position[v] = x;
+        m_spacing[v] = dv;
+    }
+
+    void writeTo(Contour& c, int start) const
+    {
+        c.positions.clear();
+        c.previous.clear();
+        c.spacing.clear();
+        int v = start;
+        do {
+            c.positions.push_back(m_position[v]);
+            c.previous.push_back(m_previous[v]);
+            c.spacing.push_back(m_spacing[v]);
+            v = m_next[v];
+        } while (v != start);
+    }
+
+private:
+    std::vector<Vec2> m_position, m_previous;
+    std::vector<double> m_spacing;
+    std::vector<int> m_next, m_before;
+    int m_alive = 0;
+    bool m_rewind = true;
+};
+
+// Splits every edge longer than its spacing, recursively. False when `budget` vertices are reached.
+bool splitPass(Ring& ring, int start, const MotionMap& map, std::size_t budget, bool& changed)
+{
+    int v = start;
+    do {
+        while (ring.length(v, ring.next(v)) > ring.spacing(v, ring.next(v))) {
+            if (std::size_t(ring.alive()) >= budget)
+                return false;
+            ring.splitAfter(v, map);
+            changed = true;
+        }
+        v = ring.next(v);
+    } while (v != start);
+    return true;
+}
+
+// Removes a vertex of every edge shorter than half its spacing: the straighter endpoint, so corners
+// and curl tips survive. Where removal would leave an edge longer than its spacing, the vertex is
+// recentred instead. Returns the (possibly new) start vertex.
+int collapsePass(Ring& ring, int start, const MotionMap& map, bool& changed)
+{
+    int v = start;
+    for (int steps = ring.alive(); steps > 0 && ring.alive() > 3; --steps) {
+        const int w = ring.next(v);
+        if (ring.length(v, w) >= 0.5 * ring.spacing(v, w)) {
+            v = w;
+            continue;
+        }
+        const int victim = ring.turning(v) < ring.turning(w) ? v : w;
+        const int a = ring.before(victim), b = ring.next(victim);
+        if (ring.length(a, b) <= ring.spacing(a, b)) {
+            ring.unlink(victim);
+            if (victim == start)
+                start = b;
+        } else {
+            ring.recentre(victim, map);
+        }
+        changed = true;
+        v = b;
+    }
+    return start;
+}
+
+void requireFinite(const Contour& c)
+{
+    for (const Vec2& p : c.positions)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            throw std::runtime_error("the flow moved a contour vertex to a non-finite position");
+}
+
+} // namespace
+
+ContourTracker::ContourTracker(const TrackingSettings& settings)
+    : m_settings(settings)
+{
+}
+
+void ContourTracker::addContour(int region, const Polygon& polygon)
+{
+    Contour c;
+    c.region = region;
+    c.positions = resample(polygon, m_settings.maxSpacing);
+    c.previous = c.positions;
+    c.spacing.assign(c.positions.size(), m_settings.maxSpacing);
+    c.targetArea = signedArea(c.positions);
+    m_vertexCount += c.positions.size();
+    m_contours.push_back(std::move(c));
+}
+
+void ContourTracker::setContours(std::vector<Contour> contours)
+{
+    m_contours = std::move(contours);
+    m_vertexCount = 0;
+    for (const Contour& c : m_contours)
+        m_vertexCount += c.positions.size();
+}
+
+double ContourTracker::strainInSpacings(const Flow& flow, double t, double dt) const
+{
+    double worst = 0.0;
+    std::vector<Vec2> velocity;
+    for (const Contour& c : m_contours) {
+        const std::size_t n = c.positions.size();
+        velocity.resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+            velocity[i] = flow.velocity(c.positions[i], t);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t j = (i + 1) % n;
+            const double spacing = 0.5 * (c.spacing[i] + c.spacing[j]);
+            worst = std::max(worst, glm::distance(velocity[i], velocity[j]) * dt / spacing);
+        }
+    }
+    return worst;
+}
+
+bool ContourTracker::advect(const Flow& flow, double t, double dt)
+{
+    for (Contour& c : m_contours) {
+        c.previous = c.positions;
+        for (std::size_t i = 0; i < c.positions.size(); ++i)
+            c.positions[i] = rungeKutta4(flow, c.previous[i], t, dt);
+        requireFinite(c);
+    }
+    return refineAll([&flow, t, dt](Vec2 p) { return rungeKutta4(flow, p, t, dt); }, flow, t + dt);
+}
+
+bool ContourTracker::applyMotion(const MotionMap& map, const Flow& flow, double t)
+{
+    for (Contour& c : m_contours) {
+        c.previous = c.positions;
+        for (std::size_t i = 0; i < c.positions.size(); ++i)
+            c.positions[i] = map(c.previous[i]);
+        requireFinite(c);
+    }
+    return refineAll(map, flow, t);
+}
+
+bool ContourTracker::refineAll(const MotionMap& map, const Flow& flow, double t)
+{
+    computeSpacing(m_contours, flow, t, m_settings, m_grid);
+    bool withinBudget = true;
+    std::size_t total = m_vertexCount;
+    for (Contour& c : m_contours) {
+        total -= c.positions.size();
+        const std::size_t budget = m_settings.maxVertices > total ? m_settings.maxVertices - total : 0;
+        withinBudget = refine(c, map, budget) && withinBudget;
+        total += c.positions.size();
+        if (m_settings.areaCorrection)
+            correctArea(c.positions, c.targetArea);
+    }
+    m_vertexCount = total;
+    return withinBudget;
+}
+
+bool ContourTracker::refine(Contour& contour, const MotionMap& map, std::size_t budget)
+{
+    // Split and collapse alternate until neither changes anything: a collapse can leave a long edge
+    // and a split a short one, and a few rounds settle both. Should a contour still oscillate after
+    // maxRounds, a last split pass keeps the upper bound, which topology depends on.
+    constexpr int maxRounds = 16;
+    Ring ring(contour, m_settings.timeRewinding);
+    int start = 0;
+    bool withinBudget = true;
+    bool settled = false;
+    for (int round = 0; round < maxRounds && withinBudget && !settled; ++round) {
+        bool changed = false;
+        withinBudget = splitPass(ring, start, map, budget, changed);
+        start = collapsePass(ring, start, map, changed);
+        settled = !changed;
+    }
+    if (!settled && withinBudget) {
+        bool changed = false;
+        withinBudget = splitPass(ring, start, map, budget, changed);
+    }
+    ring.writeTo(contour, start);
+    return withinBudget;
+}
+
+} // namespace vf::sim

@@ -1,0 +1,59 @@
+#pragma once
+// Lagrangian contour tracking (paper §3.1, §3.3): RK4 advection (eq. 1), refinement by the
+// time-rewinding split (eq. 2) and collapse, adaptive spacing, optional area correction.
+#include "sim/Flow.h"
+#include "sim/ProximityGrid.h"
+#include "sim/Tracking.h"
+
+#include <functional>
+#include <vector>
+
+namespace vf::sim {
+
+// Where a point that sat at `p` when the current motion began is now. For advection this is the
+// RK4 flow map over the step, for an ink drop the drop's push; splitting an edge evaluates it at
+// the midpoint of the edge's *previous* endpoints (eq. 2), so new vertices land on the true curve.
+using MotionMap = std::function<Vec2(Vec2 p)>;
+
+class ContourTracker {
+public:
+    explicit ContourTracker(const TrackingSettings& settings);
+
+    const TrackingSettings& settings() const { return m_settings; }
+    const std::vector<Contour>& contours() const { return m_contours; }
+    std::size_t vertexCount() const { return m_vertexCount; }
+
+    // Adds a closed contour for `region`, resampled so no edge exceeds d_max. Its area at this
+    // moment becomes the target of the area correction.
+    void addContour(int region, const Polygon& polygon);
+
+    // Largest |u(v_{i+1}, t) − u(v_i, t)|·dt / d_e over all edges: how many local spacings a step
+    // would move a vertex relative to its neighbour.
+    double strainInSpacings(const Flow& flow, double t, double dt) const;
+
+    // Moves every vertex through `flow` from t to t + dt (RK4, eq. 1) and refines.
+    // The flow must be valid over [t, t + dt]. Returns false when refinement stopped at
+    // max_vertices; the contours are then valid but may have edges longer than d_i.
+    bool advect(const Flow& flow, double t, double dt);
+
+    // Moves every vertex by `map` (an instantaneous motion such as an ink drop) and refines;
+    // `flow` and `t` feed the spacing's vorticity term.
+    bool applyMotion(const MotionMap& map, const Flow& flow, double t);
+
+    // Replaces all contours (snapshot restore); counts are recomputed.
+    void setContours(std::vector<Contour> contours);
+
+private:
+    bool refineAll(const MotionMap& map, const Flow& flow, double t);
+    bool refine(Contour& contour, const MotionMap& map, std::size_t budget);
+
+    TrackingSettings m_settings;
+    std::vector<Contour> m_contours;
+    std::size_t m_vertexCount = 0;
+    ProximityGrid m_grid;
+};
+
+// One classic fourth-order Runge–Kutta step through `flow` (eq. 1).
+Vec2 rungeKutta4(const Flow& flow, Vec2 p, double t, double dt);
+
+} // namespace vf::sim

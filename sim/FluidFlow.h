@@ -1,0 +1,30 @@
+#pragma once
+// The fluid solver seen as a Flow: velocity between two solver steps is interpolated linearly in
+// time, so RK4's mid-step samples (eq. 1) see the flow of that moment rather than a frozen field.
+#include "sim/Flow.h"
+#include "sim/FluidSolver.h"
+
+namespace vf::sim {
+
+class FluidFlow final : public Flow {
+public:
+    explicit FluidFlow(const FluidSettings& settings);
+
+    FluidSolver& solver() { return m_solver; }
+    const FluidSolver& solver() const { return m_solver; }
+
+    void advance(double dt) override;
+    double time() const override { return m_time; }
+    Vec2 velocity(Vec2 p, double t) const override;
+    double vorticity(Vec2 p, double t) const override;
+
+private:
+    double blend(double t) const;  // 0 at the step's start, 1 at its end
+
+    FluidSolver m_solver;
+    MacVelocity m_previous;
+    double m_stepStart = 0.0;
+    double m_time = 0.0;
+};
+
+} // namespace vf::sim

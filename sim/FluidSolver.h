@@ -1,0 +1,156 @@
+#pragma once
+// Stable-fluids solver on a staggered (MAC) grid over the canvas, closed walls.
+// Public API is used by FluidFlow and the tests; internals belong to FluidSolver.cpp.
+#include "sim/Geometry.h"
+#include "sim/LinearSolve.h"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace vf::sim {
+
+enum class Advection { SemiLagrangian, MacCormack };
+
+struct FluidSettings {
+    int nx = 64;              // cells across the canvas width
+    int ny = 64;              // cells down the canvas height
+    double width = 1.0;       // canvas size in canvas units
+    double height = 1.0;
+    double viscosity = 5e-4;  // kinematic, canvas units^2 / s; 0 allowed
+    Advection advection = Advection::MacCormack;
+    double pressureTolerance = 1e-8;  // see FluidSolver.cpp for the norm it is measured in
+};
+
+// The staggered velocity at one instant: u on vertical cell faces, v on horizontal ones.
+// Copyable, so the caller can keep the field of the previous step and interpolate in time.
+struct MacVelocity {
+    int nx = 0, ny = 0;
+    double hx = 1.0, hy = 1.0;
+    std::vector<double> u;  // (nx + 1) * ny
+    std::vector<double> v;  // nx * (ny + 1)
+
+    Vec2 sample(Vec2 p) const;      // bilinear, clamped to the canvas
+    double vorticity(Vec2 p) const; // dv/dx - du/dy, bilinear from cell corners
+};
+
+class FluidSolver {
+public:
+    explicit FluidSolver(const FluidSettings& settings);
+
+    const FluidSettings& settings() const { return m_settings; }
+
+    // A stylus moved from `from` to `to` during `duration` seconds with radius `radius`. Its force
+    // is applied in the next step() (splatted along the segment, strength from the pen's speed).
+    void addStylus(Vec2 from, Vec2 to, double radius, double duration);
+
+    // One step: forces, advection, implicit viscosity, pressure projection.
+    void step(double dt);
+
+    const MacVelocity& velocity() const { return m_velocity; }
+    void setVelocity(const MacVelocity& velocity);  // same dimensions; for snapshots and tests
+
+    double maxDivergence() const;   // max |div u| over cells, 1/s
+    double kineticEnergy() const;   // 0.5 * integral of |u|^2 over the canvas
+    double maxSpeed() const;
+    int lastPressureIterations() const { return m_lastPressureIterations; }
+
+private:
+    struct StylusSegment {
+        Vec2 from, to;
+        double radius;
+        Vec2 velocity;  // of the pen, canvas units / s
+    };
+
+    void applyStylus(const StylusSegment& segment, double dt);
+    void advect(double dt);
+    void advectComponent(int component, double dt);
+    void diffuse(double dt);
+    void project();
+
+    FluidSettings m_settings;
+    MacVelocity m_velocity;
+    int m_lastPressureIterations = 0;
+
+    std::vector<StylusSegment> m_pendingStylus;
+    MacVelocity m_advected;                  // advection target, swapped with m_velocity
+    std::vector<double> m_backward;          // MacCormack: the forward result traced back
+    std::vector<double> m_low, m_high;       // MacCormack limiter bounds per face
+    std::vector<double> m_rhs, m_solution;   // right-hand side / unknowns of the linear solves
+    std::vector<double> m_pressure;          // kept between steps to warm-start the projection
+    PcgSolver m_pressureSolver;
+    std::array<PcgSolver, 2> m_viscositySolvers;  // u and v faces have different stencils
+};
+
+// ---- Hot-path sampling, inline: called several times per contour vertex per step. -----------
+
+namespace detail {
+
+// A position on a row-major cols x rows lattice (cols, rows >= 2): the lattice point (i, j) at
+// the low corner of the square holding it and the fractions across. Positions outside are clamped
+// onto the lattice, NaN to the low end, so no position, however bad, indexes out of bounds.
+struct LatticePoint {
+    int i, j;
+    double fx, fy;
+};
+
+inline LatticePoint locate(int cols, int rows, double gx, double gy)
+{
+    // Branch-free clamps (maxsd/minsd); std::fmax/fmin would be library calls. The operand order
+    // matters: a NaN fails `0 < g` and becomes 0.
+    gx = std::min(0.0 < gx ? gx : 0.0, double(cols - 1));
+    gy = std::min(0.0 < gy ? gy : 0.0, double(rows - 1));
+    const int i = std::min(int(gx), cols - 2);
+    const int j = std::min(int(gy), rows - 2);
+    return {i, j, gx - i, gy - j};
+}
+
+inline double bilinear(const double* f, int cols, const LatticePoint& q)
+{
+    const double* r0 = f + std::ptrdiff_t(q.j) * cols + q.i;
+    const double* r1 = r0 + cols;
+    return (1.0 - q.fy) * ((1.0 - q.fx) * r0[0] + q.fx * r0[1])
+         + q.fy * ((1.0 - q.fx) * r1[0] + q.fx * r1[1]);
+}
+
+// The differences behind the vorticity dv/dx - du/dy at cell corner (i, j), 0 <= i <= nx,
+// 0 <= j <= ny: v across the corner (x) and u across it (y), central around the corner. On the
+// canvas edge the nearest interior difference is used instead (clamped indices), so the field
+// stays smooth there and needs no branches. Dividing by the cell size is left to the caller, once.
+inline Vec2 cornerDifferences(const MacVelocity& m, int i, int j)
+{
+    const int a = std::clamp(i - 1, 0, m.nx - 2);
+    const int b = std::clamp(j - 1, 0, m.ny - 2);
+    const double* vRow = m.v.data() + std::ptrdiff_t(j) * m.nx;
+    const double* uCol = m.u.data() + i;
+    const std::ptrdiff_t uStride = m.nx + 1;
+    return {vRow[a + 1] - vRow[a], uCol[(b + 1) * uStride] - uCol[b * uStride]};
+}
+
+// The velocity at (gx, gy) in cell units (x / hx, y / hy): u lives at (i, j + 1/2), v at
+// (i + 1/2, j).
+inline Vec2 sampleCells(const MacVelocity& m, double gx, double gy)
+{
+    return {bilinear(m.u.data(), m.nx + 1, locate(m.nx + 1, m.ny, gx, gy - 0.5)),
+            bilinear(m.v.data(), m.nx, locate(m.nx, m.ny + 1, gx - 0.5, gy))};
+}
+
+} // namespace detail
+
+inline Vec2 MacVelocity::sample(Vec2 p) const
+{
+    return detail::sampleCells(*this, p.x / hx, p.y / hy);
+}
+
+inline double MacVelocity::vorticity(Vec2 p) const
+{
+    const detail::LatticePoint q = detail::locate(nx + 1, ny + 1, p.x / hx, p.y / hy);
+    const Vec2 d = (1.0 - q.fy) * ((1.0 - q.fx) * detail::cornerDifferences(*this, q.i, q.j)
+                                   + q.fx * detail::cornerDifferences(*this, q.i + 1, q.j))
+                 + q.fy * ((1.0 - q.fx) * detail::cornerDifferences(*this, q.i, q.j + 1)
+                           + q.fx * detail::cornerDifferences(*this, q.i + 1, q.j + 1));
+    return d.x / hx - d.y / hy;
+}
+
+} // namespace vf::sim

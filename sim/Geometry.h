@@ -1,0 +1,36 @@
+#pragma once
+// Plain polygon geometry shared by the engine, the document and the tests.
+#include <glm/vec2.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace vf::sim {
+
+using Vec2 = glm::dvec2;
+
+// A closed contour: the last vertex connects back to the first. Canvas units, y down.
+using Polygon = std::vector<Vec2>;
+
+// The shoelace formula on the raw coordinates. Every contour the engine creates has positive area,
+// which with y pointing down means the vertices run clockwise as seen on screen.
+double signedArea(const Polygon& polygon);
+double perimeter(const Polygon& polygon);
+
+// Splits every edge into equal pieces no longer than maxSpacing; the original vertices stay.
+Polygon resample(const Polygon& polygon, double maxSpacing);
+
+// A circle sampled with edges no longer than maxSpacing (at least 8 vertices), positive area.
+Polygon circle(Vec2 center, double radius, double maxSpacing);
+
+// Number of pairs of edges that properly intersect, over all given polygons together: edges of the
+// same polygon count too, except neighbours sharing a vertex. Uses a uniform segment grid.
+std::size_t countCrossings(const std::vector<const Polygon*>& polygons);
+inline bool isSimple(const Polygon& polygon) { return countCrossings({&polygon}) == 0; }
+
+// Largest distance from a vertex of `from` to the closed polyline `to`.
+double directedHausdorffDistance(const Polygon& from, const Polygon& to);
+// Symmetric Hausdorff distance between two closed polylines (vertex-to-segment, both ways).
+double hausdorffDistance(const Polygon& a, const Polygon& b);
+
+} // namespace vf::sim

@@ -1,0 +1,102 @@
+#include "sim/ProximityGrid.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vf::sim {
+
+namespace {
+constexpr int maxCellsPerAxis = 4096;  // a wider spread only makes cells larger, never wrong
+}
+
+int ProximityGrid::cellOf(Vec2 p, int& column, int& row) const
+{
+    column = std::clamp(int((p.x - m_origin.x) / m_radius), 0, m_columns - 1);
+    row = std::clamp(int((p.y - m_origin.y) / m_radius), 0, m_rows - 1);
+    return row * m_columns + column;
+}
+
+void ProximityGrid::build(const std::vector<Contour>& contours, double radius)
+{
+    Vec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    std::size_t total = 0;
+    for (const Contour& c : contours) {
+        for (const Vec2& p : c.positions) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        total += c.positions.size();
+    }
+    if (total == 0)
+        lo = hi = Vec2(0.0);
+    const Vec2 extent = hi - lo;
+    m_radius = std::max({radius, extent.x / maxCellsPerAxis, extent.y / maxCellsPerAxis, 1e-300});
+    m_origin = lo;
+    m_columns = int(extent.x / m_radius) + 1;
+    m_rows = int(extent.y / m_radius) + 1;
+
+    // Counting sort: count per cell, exclusive prefix sum, scatter.
+    std::vector<std::uint32_t> cellOfVertex(total);
+    m_cellStart.assign(std::size_t(m_columns) * m_rows + 1, 0);
+    std::size_t k = 0;
+    int column = 0, row = 0;
+    for (const Contour& c : contours)
+        for (const Vec2& p : c.positions)
+            ++m_cellStart[(cellOfVertex[k++] = cellOf(p, column, row)) + 1];
+    for (std::size_t cell = 1; cell < m_cellStart.size(); ++cell)
+        m_cellStart[cell] += m_cellStart[cell - 1];
+
+    std::vector<std::uint32_t> fill(m_cellStart.begin(), m_cellStart.end() - 1);
+    m_entries.resize(total);
+    m_slot.resize(contours.size());
+    m_contourLength.resize(contours.size());
+    k = 0;
+    for (std::uint32_t ci = 0; ci < contours.size(); ++ci) {
+        const auto& positions = contours[ci].positions;
+        m_slot[ci].resize(positions.size());
+        double arc = 0.0;
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            const std::uint32_t slot = fill[cellOfVertex[k++]]++;
+            m_entries[slot] = {positions[i], arc, ci};
+            m_slot[ci][i] = slot;
+            arc += glm::distance(positions[i], positions[(i + 1) % positions.size()]);
+        }
+        m_contourLength[ci] = arc;
+    }
+}
+
+double ProximityGrid::nearestOtherPart(std::size_t contour, std::size_t index) const
+{
+    const Entry& self = m_entries[m_slot[contour][index]];
+    const double length = m_contourLength[contour];
+    double best2 = m_radius * m_radius;
+    bool found = false;
+    int column = 0, row = 0;
+    cellOf(self.position, column, row);
+    for (int r = std::max(0, row - 1); r <= std::min(m_rows - 1, row + 1); ++r) {
+        for (int c = std::max(0, column - 1); c <= std::min(m_columns - 1, column + 1); ++c) {
+            const std::size_t cell = std::size_t(r) * m_columns + c;
+            for (std::uint32_t e = m_cellStart[cell]; e < m_cellStart[cell + 1]; ++e) {
+                const Entry& other = m_entries[e];
+                const Vec2 d = other.position - self.position;
+                const double dist2 = glm::dot(d, d);
+                if (dist2 >= best2)
+                    continue;
+                if (other.contour == self.contour) {
+                    const double along = std::abs(other.arc - self.arc);
+                    const double arc = std::min(along, length - along);
+                    if (arc * arc <= 4.0 * dist2)
+                        continue;  // its own neighbourhood along the contour
+                }
+                best2 = dist2;
+                found = true;
+            }
+        }
+    }
+    return found ? std::sqrt(best2) : std::numeric_limits<double>::infinity();
+}
+
+} // namespace vf::sim

@@ -1,0 +1,40 @@
+#pragma once
+// Uniform-grid neighbour search for the proximity term (eq. 7): for each vertex, the distance to
+// the nearest vertex of *another part* of any contour. Built by counting sort over cells, the same
+// layout the OpenCL port uses ([Grand 2007], cited by the paper §3.4).
+#include "sim/Tracking.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace vf::sim {
+
+class ProximityGrid {
+public:
+    // Indexes every vertex of `contours`; `radius` is the search radius and the cell size.
+    void build(const std::vector<Contour>& contours, double radius);
+
+    // Distance from vertex `index` of contour `contour` to the nearest vertex of another part of
+    // any contour, or +infinity when none lies within the radius. A vertex of the same contour is
+    // another part when the way along the contour is more than twice the straight distance: the
+    // far side of a thin filament counts, the vertex's own neighbourhood does not.
+    double nearestOtherPart(std::size_t contour, std::size_t index) const;
+
+private:
+    struct Entry {
+        Vec2 position;
+        double arc;  // arc length from the contour's first vertex
+        std::uint32_t contour;
+    };
+    int cellOf(Vec2 p, int& column, int& row) const;
+
+    double m_radius = 0.0;
+    Vec2 m_origin{0.0};
+    int m_columns = 0, m_rows = 0;
+    std::vector<std::uint32_t> m_cellStart;         // m_columns * m_rows + 1 offsets into m_entries
+    std::vector<Entry> m_entries;                   // sorted by cell
+    std::vector<std::vector<std::uint32_t>> m_slot; // [contour][vertex] -> index into m_entries
+    std::vector<double> m_contourLength;
+};
+
+} // namespace vf::sim

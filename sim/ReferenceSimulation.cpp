@@ -1,0 +1,86 @@
+#include "sim/ReferenceSimulation.h"
+
+#include "sim/AnalyticFlow.h"
+#include "sim/FluidFlow.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vf::sim {
+
+namespace {
+
+std::unique_ptr<Flow> makeFlow(const SimulationSettings& s)
+{
+    if (s.flow == SimulationSettings::FlowType::Analytic)
+        return std::make_unique<AnalyticFlow>(s.u, s.v);
+    return std::make_unique<FluidFlow>(s.fluid);
+}
+
+} // namespace
+
+ReferenceSimulation::ReferenceSimulation(const SimulationSettings& settings)
+    : m_settings((validateSettings(settings), settings))
+    , m_flow(makeFlow(settings))
+    , m_fluid(dynamic_cast<FluidFlow*>(m_flow.get()))
+    , m_tracker(settings.tracking)
+{
+}
+
+ReferenceSimulation::~ReferenceSimulation() = default;
+
+int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
+{
+    for (const Polygon& p : contours)
+        m_tracker.addContour(m_regionCount, p);
+    return m_regionCount++;
+}
+
+int ReferenceSimulation::drop(Vec2 center, double radius)
+{
+    const double r2 = radius * radius;
+    const MotionMap push = [center, radius, r2](Vec2 p) {
+        const Vec2 d = p - center;
+        const double l2 = glm::dot(d, d);
+        if (l2 == 0.0)
+            return center + Vec2(radius, 0.0);  // the centre itself: any direction is as good
+        return center + d * std::sqrt(1.0 + r2 / l2);
+    };
+    m_tracker.applyMotion(push, *m_flow, time());
+    return addRegion({circle(center, radius, m_settings.tracking.maxSpacing)});
+}
+
+void ReferenceSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration)
+{
+    if (m_fluid)
+        m_pendingStylus.push_back({from, to, radius, duration});
+}
+
+StepReport ReferenceSimulation::step(double dt)
+{
+    StepReport report;
+    const double strain = m_tracker.strainInSpacings(*m_flow, time(), dt);
+    report.substeps = std::clamp(int(std::ceil(strain / m_settings.tracking.substepStrain)), 1,
+                                 m_settings.tracking.maxSubsteps);
+    const double h = dt / report.substeps;
+    for (int k = 0; k < report.substeps; ++k) {
+        // Each substep gets its share of the pen's path, so the force follows the pen.
+        for (const StylusSegment& s : m_pendingStylus) {
+            const double a = double(k) / report.substeps, b = double(k + 1) / report.substeps;
+            m_fluid->solver().addStylus(s.from + a * (s.to - s.from), s.from + b * (s.to - s.from), s.radius,
+                                        s.duration / report.substeps);
+        }
+        const double t = time();
+        m_flow->advance(h);
+        if (!m_tracker.advect(*m_flow, t, h)) {
+            report.vertexLimitReached = true;
+            break;
+        }
+    }
+    m_pendingStylus.clear();
+    return report;
+}
+
+} // namespace vf::sim

@@ -1,0 +1,42 @@
+#pragma once
+// The reference backend: scalar double-precision C++, deterministic, single-threaded.
+#include "sim/ContourTracker.h"
+#include "sim/Simulation.h"
+
+#include <memory>
+
+namespace vf::sim {
+
+class FluidFlow;
+
+class ReferenceSimulation final : public Simulation {
+public:
+    explicit ReferenceSimulation(const SimulationSettings& settings);
+    ~ReferenceSimulation() override;
+
+    std::string backendName() const override { return "reference"; }
+    const SimulationSettings& settings() const override { return m_settings; }
+    int addRegion(const std::vector<Polygon>& contours) override;
+    int drop(Vec2 center, double radius) override;
+    void stylus(Vec2 from, Vec2 to, double radius, double duration) override;
+    StepReport step(double dt) override;
+    double time() const override { return m_flow->time(); }
+    std::size_t vertexCount() const override { return m_tracker.vertexCount(); }
+    int regionCount() const override { return m_regionCount; }
+    std::vector<Contour> contours() const override { return m_tracker.contours(); }
+
+private:
+    struct StylusSegment {
+        Vec2 from, to;
+        double radius, duration;
+    };
+
+    SimulationSettings m_settings;
+    std::unique_ptr<Flow> m_flow;
+    FluidFlow* m_fluid = nullptr;  // m_flow when the flow is a fluid
+    ContourTracker m_tracker;
+    std::vector<StylusSegment> m_pendingStylus;
+    int m_regionCount = 0;
+};
+
+} // namespace vf::sim

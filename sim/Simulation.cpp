@@ -1,0 +1,44 @@
+#include "sim/Simulation.h"
+
+#include "sim/ReferenceSimulation.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace vf::sim {
+
+namespace {
+
+void require(bool condition, const char* message)
+{
+    if (!condition)
+        throw std::invalid_argument(message);
+}
+
+} // namespace
+
+// Shared by every backend so they refuse exactly the same settings.
+void validateSettings(const SimulationSettings& s)
+{
+    const TrackingSettings& t = s.tracking;
+    require(std::isfinite(t.maxSpacing) && t.maxSpacing > 0.0, "tracking max_spacing must be a positive number");
+    require(t.maxVertices >= 3, "tracking max_vertices must be at least 3");
+    require(t.maxSubsteps >= 1, "tracking max_substeps must be at least 1");
+    require(std::isfinite(s.fluid.width) && s.fluid.width > 0.0 && std::isfinite(s.fluid.height) && s.fluid.height > 0.0,
+            "canvas width and height must be positive numbers");
+}
+
+std::vector<std::vector<Polygon>> Simulation::regions() const
+{
+    std::vector<std::vector<Polygon>> out(regionCount());
+    for (Contour& c : contours())
+        out[c.region].push_back(std::move(c.positions));
+    return out;
+}
+
+std::unique_ptr<Simulation> makeReferenceSimulation(const SimulationSettings& settings)
+{
+    return std::make_unique<ReferenceSimulation>(settings);
+}
+
+} // namespace vf::sim

@@ -1,0 +1,64 @@
+#pragma once
+// The backend interface: one live simulation of contours in a flow. The reference backend (plain
+// double-precision C++) is always built; an OpenCL backend implements the same interface.
+#include "sim/FluidSolver.h"
+#include "sim/Geometry.h"
+#include "sim/Tracking.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vf::sim {
+
+struct SimulationSettings {
+    enum class FlowType { Fluid, Analytic };
+    FlowType flow = FlowType::Fluid;
+    FluidSettings fluid;        // its width and height are the canvas size
+    std::string u = "0", v = "0";  // analytic flow: muparser expressions in x, y, t
+    TrackingSettings tracking;
+};
+
+struct StepReport {
+    bool vertexLimitReached = false;  // refinement stopped at tracking.maxVertices
+    int substeps = 1;
+};
+
+class Simulation {
+public:
+    virtual ~Simulation() = default;
+
+    virtual std::string backendName() const = 0;
+    virtual const SimulationSettings& settings() const = 0;
+
+    // Adds a region made of closed contours (filled together, even-odd); returns its index.
+    virtual int addRegion(const std::vector<Polygon>& contours) = 0;
+    // A marbling ink drop: every existing contour point P moves to C + (P−C)·sqrt(1 + r²/|P−C|²),
+    // which pushes old ink outward and keeps each region's area, then a circle of radius r at C
+    // becomes a new region, whose index is returned.
+    virtual int drop(Vec2 center, double radius) = 0;
+    // The stylus moved from `from` to `to` during `duration` seconds; acts during the next step.
+    // Only a fluid flow responds.
+    virtual void stylus(Vec2 from, Vec2 to, double radius, double duration) = 0;
+
+    // Advances by dt, split into substeps when vertices would move too far for their spacing.
+    // Throws std::runtime_error when the flow turns non-finite.
+    virtual StepReport step(double dt) = 0;
+
+    virtual double time() const = 0;
+    virtual std::size_t vertexCount() const = 0;
+    virtual int regionCount() const = 0;
+    // Every contour with its region and spacing, read back from the backend.
+    virtual std::vector<Contour> contours() const = 0;
+
+    // Every region's contours, indexed by region.
+    std::vector<std::vector<Polygon>> regions() const;
+};
+
+// Throws std::invalid_argument with a one-line message for settings no backend can run.
+void validateSettings(const SimulationSettings& settings);
+
+// Throws std::invalid_argument with a one-line message for invalid settings.
+std::unique_ptr<Simulation> makeReferenceSimulation(const SimulationSettings& settings);
+
+} // namespace vf::sim

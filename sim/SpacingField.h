@@ -1,0 +1,19 @@
+#pragma once
+// The adaptive vertex spacing d_i of paper §3.3.
+#include "sim/Flow.h"
+#include "sim/ProximityGrid.h"
+#include "sim/Tracking.h"
+
+namespace vf::sim {
+
+// Discrete curvature at vertex i (1/length): the Menger curvature of it and its two neighbours.
+double discreteCurvature(Vec2 before, Vec2 at, Vec2 after);
+
+// Fills every contour's `spacing` for the flow at time t:
+//   d_i = d_max · exp(-|κ_i|·Lκ) · exp(-|ω(v_i)|/ω_ref) · (1 - exp(-dist_i/Lp)) + ε    (eqs. 3, 4, 5, 7)
+// then smooths d_i along the contour with a Gaussian window (eq. 6). In uniform mode d_i = d_max.
+// `grid` is scratch storage reused between calls.
+void computeSpacing(std::vector<Contour>& contours, const Flow& flow, double t,
+                    const TrackingSettings& settings, ProximityGrid& grid);
+
+} // namespace vf::sim

@@ -1,0 +1,280 @@
+// Contour tracking accuracy (paper §3.1, §3.3; DESIGN §4 quality bars), on every backend.
+#include "Backends.h"
+#include "Flows.h"
+
+#include "sim/AnalyticFlow.h"
+#include "sim/ContourTracker.h"
+
+#include <glm/geometric.hpp>
+
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace vf;
+using sim::Polygon;
+using sim::Vec2;
+
+namespace {
+
+double totalArea(const std::vector<Polygon>& contours)
+{
+    double a = 0.0;
+    for (const Polygon& p : contours)
+        a += sim::signedArea(p);
+    return a;
+}
+
+// Runs `steps` steps of dt; returns the largest relative deviation of any edge from its band
+// [d/2, d], as (worst shortfall below d/2, worst excess above d) relative to d.
+struct SpacingViolation {
+    double belowHalf = 0.0;
+    double above = 0.0;
+};
+
+SpacingViolation spacingViolation(const sim::Simulation& simulation)
+{
+    SpacingViolation worst;
+    for (const sim::Contour& c : simulation.contours()) {
+        const std::size_t n = c.positions.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t j = (i + 1) % n;
+            const double d = 0.5 * (c.spacing[i] + c.spacing[j]);
+            const double len = glm::distance(c.positions[i], c.positions[j]);
+            worst.above = std::max(worst.above, len / d - 1.0);
+            worst.belowHalf = std::max(worst.belowHalf, 0.5 - len / d);
+        }
+    }
+    return worst;
+}
+
+// Zalesak's slotted disk: radius 0.15 at (0.5, 0.75), a slot 0.05 wide cut 0.25 deep from the
+// side facing +y. Positive area, like every shape the engine makes.
+Polygon slottedDisk(double spacing)
+{
+    const Vec2 centre(0.5, 0.75);
+    const double radius = 0.15, halfWidth = 0.025, slotTop = 0.9 - 0.25;
+    const double side = std::asin(halfWidth / radius);
+    const double from = std::numbers::pi / 2 + side, to = 2.5 * std::numbers::pi - side;
+    const int arcSteps = int(std::ceil((to - from) * radius / spacing));
+    Polygon disk;
+    for (int i = 0; i <= arcSteps; ++i) {
+        const double a = from + (to - from) * i / arcSteps;
+        disk.push_back(centre + radius * Vec2(std::cos(a), std::sin(a)));
+    }
+    disk.push_back({0.5 + halfWidth, slotTop});
+    disk.push_back({0.5 - halfWidth, slotTop});
+    return sim::resample(disk, spacing);
+}
+
+// Mean distance from the vertices of `points` to the closed polyline `curve`.
+double meanDistance(const Polygon& points, const Polygon& curve)
+{
+    double sum = 0.0;
+    for (const Vec2& p : points)
+        sum += sim::directedHausdorffDistance({p}, curve);
+    return sum / points.size();
+}
+
+} // namespace
+
+class TestTracking : public QObject {
+    Q_OBJECT
+
+private slots:
+    void rungeKuttaIsFourthOrder();
+
+    void edgesStayWithinSpacing_data();
+    void edgesStayWithinSpacing();
+
+    void timeRewindingBeatsLinearMidpoint_data();
+    void timeRewindingBeatsLinearMidpoint();
+
+    void singleVortexReturns_data();
+    void singleVortexReturns();
+
+    void slottedDiskKeepsCorners_data();
+    void slottedDiskKeepsCorners();
+
+    void adaptiveSpacingSavesVertices_data();
+    void adaptiveSpacingSavesVertices();
+};
+
+void TestTracking::rungeKuttaIsFourthOrder()
+{
+    // A quarter turn of solid rotation, at three step sizes; the error must fall by 2^4 per halving.
+    const auto settings = test::rotation(1.0, 0.01, false);
+    const sim::AnalyticFlow flow(settings.u, settings.v);
+    const Vec2 start(0.8, 0.5);
+    const Vec2 exact(0.5, 0.8);  // rotated by +90° about (0.5, 0.5) in the flow's sense
+    std::vector<double> errors;
+    for (int n : {8, 16, 32}) {
+        Vec2 p = start;
+        const double dt = 0.25 / n;
+        for (int k = 0; k < n; ++k)
+            p = sim::rungeKutta4(flow, p, k * dt, dt);
+        errors.push_back(glm::distance(p, exact));
+    }
+    for (std::size_t i = 1; i < errors.size(); ++i) {
+        const double order = std::log2(errors[i - 1] / errors[i]);
+        QVERIFY2(order > 3.8 && order < 4.2, qPrintable(QStringLiteral("observed order %1").arg(order)));
+    }
+}
+
+void TestTracking::edgesStayWithinSpacing_data()
+{
+    test::addBackendColumn();
+    QTest::addColumn<bool>("adaptive");
+    for (const QString& b : test::backendNames()) {
+        QTest::newRow(qPrintable(b + "/uniform")) << b << false;
+        QTest::newRow(qPrintable(b + "/adaptive")) << b << true;
+    }
+}
+
+void TestTracking::edgesStayWithinSpacing()
+{
+    QFETCH(QString, backend);
+    QFETCH(bool, adaptive);
+    auto simulation = test::makeBackend(backend, test::singleVortex(8.0, 1.0 / 128, adaptive));
+    simulation->addRegion({sim::circle({0.5, 0.75}, 0.15, 1.0 / 128)});
+    SpacingViolation worst;
+    for (int step = 0; step < 150; ++step) {
+        simulation->step(0.02);
+        const SpacingViolation v = spacingViolation(*simulation);
+        worst.above = std::max(worst.above, v.above);
+        worst.belowHalf = std::max(worst.belowHalf, v.belowHalf);
+    }
+    qInfo() << "vertices" << simulation->vertexCount() << "worst excess" << worst.above << "worst shortfall" << worst.belowHalf;
+    QVERIFY2(worst.above <= 1e-12, qPrintable(QStringLiteral("an edge exceeded d_i by %1").arg(worst.above)));
+    QVERIFY2(worst.belowHalf <= 1e-12, qPrintable(QStringLiteral("an edge fell below d_i/2 by %1").arg(worst.belowHalf)));
+}
+
+void TestTracking::timeRewindingBeatsLinearMidpoint_data()
+{
+    test::addBackendColumn();
+    for (const QString& b : test::backendNames())
+        QTest::newRow(qPrintable(b)) << b;
+}
+
+void TestTracking::timeRewindingBeatsLinearMidpoint()
+{
+    QFETCH(QString, backend);
+    // Coarse spacing and large steps (no substeps) in the curved single-vortex flow, where one
+    // step stretches and bends edges far. The reference tracks the same flow with the same step
+    // very finely, so RK4's time error is common to both and what differs is where split vertices
+    // land: on the advected curve (eq. 2) or on the chord.
+    constexpr double dt = 0.2;
+    auto run = [&](double spacing, bool rewind) {
+        auto settings = test::singleVortex(8.0, spacing, false);
+        settings.tracking.timeRewinding = rewind;
+        settings.tracking.maxSubsteps = 1;
+        auto simulation = test::makeBackend(backend, settings);
+        simulation->addRegion({sim::circle({0.5, 0.75}, 0.15, spacing)});
+        for (int step = 0; step < 15; ++step)
+            simulation->step(dt);
+        return simulation->regions()[0][0];
+    };
+    const Polygon reference = run(1.0 / 2048, true);
+    const Polygon rewoundRun = run(1.0 / 32, true), linearRun = run(1.0 / 32, false);
+    const double rewound = meanDistance(rewoundRun, reference), linear = meanDistance(linearRun, reference);
+    qInfo() << "mean vertex distance to reference: rewinding" << rewound << "linear midpoint" << linear
+            << "max" << sim::directedHausdorffDistance(rewoundRun, reference) << sim::directedHausdorffDistance(linearRun, reference);
+    QVERIFY2(rewound < 0.8 * linear, qPrintable(QStringLiteral("rewinding %1 vs linear %2").arg(rewound).arg(linear)));
+}
+
+void TestTracking::singleVortexReturns_data()
+{
+    test::addBackendColumn();
+    QTest::addColumn<bool>("areaCorrection");
+    QTest::addColumn<double>("areaTolerance");
+    for (const QString& b : test::backendNames()) {
+        QTest::newRow(qPrintable(b)) << b << false << 1e-3;
+        QTest::newRow(qPrintable(b + "/area-correction")) << b << true << 1e-6;
+    }
+}
+
+void TestTracking::singleVortexReturns()
+{
+    // DESIGN §4: circle r = 0.15 at (0.5, 0.75), period 8, uniform spacing 1/256.
+    QFETCH(QString, backend);
+    QFETCH(bool, areaCorrection);
+    QFETCH(double, areaTolerance);
+    auto settings = test::singleVortex(8.0, 1.0 / 256, false);
+    settings.tracking.areaCorrection = areaCorrection;
+    auto simulation = test::makeBackend(backend, settings);
+    const Polygon start = sim::circle({0.5, 0.75}, 0.15, 1.0 / 256);
+    simulation->addRegion({start});
+    const double startArea = totalArea(simulation->regions()[0]);
+    double worstArea = 0.0;
+    const double dt = 0.01;
+    for (int step = 0; step < 800; ++step) {
+        simulation->step(dt);
+        worstArea = std::max(worstArea, std::abs(totalArea(simulation->regions()[0]) / startArea - 1.0));
+    }
+    const double shape = sim::hausdorffDistance(simulation->regions()[0][0], start);
+    qInfo() << "worst relative area error" << worstArea << "shape return" << shape << "vertices" << simulation->vertexCount();
+    QVERIFY2(worstArea < areaTolerance, qPrintable(QStringLiteral("area error %1").arg(worstArea)));
+    QVERIFY2(shape < 0.002, qPrintable(QStringLiteral("shape return %1").arg(shape)));
+}
+
+void TestTracking::slottedDiskKeepsCorners_data()
+{
+    test::addBackendColumn();
+    QTest::addColumn<bool>("adaptive");
+    for (const QString& b : test::backendNames()) {
+        QTest::newRow(qPrintable(b + "/uniform")) << b << false;
+        QTest::newRow(qPrintable(b + "/adaptive")) << b << true;
+    }
+}
+
+void TestTracking::slottedDiskKeepsCorners()
+{
+    QFETCH(QString, backend);
+    QFETCH(bool, adaptive);
+    // One revolution of rigid rotation must bring every corner of the slot back.
+    auto simulation = test::makeBackend(backend, test::rotation(2.0, 1.0 / 256, adaptive));
+    const Polygon start = slottedDisk(1.0 / 256);
+    QVERIFY(sim::signedArea(start) > 0.0);
+    simulation->addRegion({start});
+    for (int step = 0; step < 200; ++step)
+        simulation->step(0.01);
+    const double distance = sim::hausdorffDistance(simulation->regions()[0][0], start);
+    qInfo() << "Hausdorff distance after one revolution" << distance;
+    QVERIFY2(distance < 0.002, qPrintable(QStringLiteral("Hausdorff %1").arg(distance)));
+}
+
+void TestTracking::adaptiveSpacingSavesVertices_data()
+{
+    test::addBackendColumn();
+    for (const QString& b : test::backendNames())
+        QTest::newRow(qPrintable(b)) << b;
+}
+
+void TestTracking::adaptiveSpacingSavesVertices()
+{
+    QFETCH(QString, backend);
+    // The curly scene: the single vortex wound up to t = T/4. Eqs. 3-7 spend vertices where
+    // curvature, vorticity and nearby contours need them; uniform spacing must be finer
+    // everywhere to match that shape error. Adaptive at d_max = h against uniform at h/2: at least
+    // as accurate against a finely tracked reference, with at least 40% fewer vertices.
+    auto run = [&](double maxSpacing, bool adaptive) {
+        auto simulation = test::makeBackend(backend, test::singleVortex(8.0, maxSpacing, adaptive));
+        simulation->addRegion({sim::circle({0.5, 0.75}, 0.15, maxSpacing)});
+        for (int step = 0; step < 100; ++step)
+            simulation->step(0.02);
+        return simulation->regions()[0][0];
+    };
+    const Polygon reference = run(1.0 / 1024, false);
+    const Polygon adaptive = run(1.0 / 256, true), uniform = run(1.0 / 512, false);
+    const double adaptiveError = sim::hausdorffDistance(adaptive, reference);
+    const double uniformError = sim::hausdorffDistance(uniform, reference);
+    qInfo() << "adaptive (d_max 1/256):" << adaptive.size() << "vertices, error" << adaptiveError
+            << "| uniform (1/512):" << uniform.size() << "vertices, error" << uniformError;
+    QVERIFY2(adaptiveError <= uniformError, "adaptive spacing lost accuracy against uniform spacing");
+    QVERIFY2(adaptive.size() <= 0.6 * uniform.size(),
+             qPrintable(QStringLiteral("%1 adaptive vs %2 uniform vertices").arg(adaptive.size()).arg(uniform.size())));
+}
+
+QTEST_APPLESS_MAIN(TestTracking)
+#include "tst_tracking.moc"
