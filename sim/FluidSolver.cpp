@@ -1,6 +1,7 @@
 // Stable fluids (Stam 1999, "Stable Fluids") on a staggered MAC grid (Harlow & Welch 1965), in the
-// form of Bridson, "Fluid Simulation for Computer Graphics" (2nd ed.): forces, advection (semi-
-// Lagrangian, or MacCormack after Selle et al. 2008), implicit viscosity, pressure projection.
+// form of Bridson, "Fluid Simulation for Computer Graphics" (2nd ed.): advection (semi-
+// Lagrangian, or MacCormack after Selle et al. 2008), implicit viscosity, stylus forces, pressure
+// projection.
 //
 // Walls: the canvas is a closed box. The normal velocity on the walls is zero (the first and last
 // u columns, the first and last v rows), and the walls are free-slip: the tangential velocity
@@ -216,12 +217,15 @@ void FluidSolver::step(double dt)
 {
     if (!(dt > 0.0) || !std::isfinite(dt))
         throw std::invalid_argument("FluidSolver::step: dt must be positive and finite");
-    for (const StylusSegment& segment : m_pendingStylus)
-        applyStylus(segment, dt);
-    m_pendingStylus.clear();
     advect(dt);
     if (m_settings.viscosity > 0.0)
         diffuse(dt);
+    // The pen acts after diffusion so that its push survives into this step's flow even in the
+    // shape-design regime, where diffusion would otherwise spread it over the canvas at once
+    // (paper §5.2: the motion is noticeable just after the user agitates the fluid).
+    for (const StylusSegment& segment : m_pendingStylus)
+        applyStylus(segment, dt);
+    m_pendingStylus.clear();
     project();
 }
 

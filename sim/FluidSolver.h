@@ -45,7 +45,7 @@ public:
     // is applied in the next step() (splatted along the segment, strength from the pen's speed).
     void addStylus(Vec2 from, Vec2 to, double radius, double duration);
 
-    // One step: forces, advection, implicit viscosity, pressure projection.
+    // One step: advection, implicit viscosity, stylus forces, pressure projection.
     void step(double dt);
 
     const MacVelocity& velocity() const { return m_velocity; }

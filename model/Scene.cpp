@@ -1,0 +1,106 @@
+// The starting contours of the scene's shapes.
+//
+// Orientation: every contour has POSITIVE sim::signedArea (the shoelace sum on the raw canvas
+// coordinates), the engine's convention (sim/Geometry.h, sim::circle, the area correction's target
+// areas). With y pointing down that is clockwise as seen on screen: right, then down, then left.
+#include "model/Scene.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace vf::model {
+namespace {
+
+// Small shapes still get a recognisable outline, matching sim::circle's minimum.
+constexpr double kMinVertices = 8.0;
+
+// theta increases from +x towards +y, as in sim::circle: positive area.
+sim::Vec2 ellipsePoint(sim::Vec2 radii, double theta) { return radii * sim::Vec2(std::cos(theta), std::sin(theta)); }
+
+// Walks the ellipse in parameter steps far shorter than maxSpacing, calling
+// visit(thetaBefore, dTheta, chordLength) per step. Shared by both passes of contour(EllipseShape).
+template <typename Visit>
+void marchEllipse(sim::Vec2 radii, double maxSpacing, Visit visit)
+{
+    const double steps = 8.0 * std::ceil(2.0 * std::numbers::pi * std::max(radii.x, radii.y) / maxSpacing) + 256.0;
+    const double dTheta = 2.0 * std::numbers::pi / steps;
+    sim::Vec2 previous = ellipsePoint(radii, 0.0);
+    for (double j = 1.0; j <= steps; j += 1.0) {
+        const sim::Vec2 p = ellipsePoint(radii, j * dTheta);
+        visit((j - 1.0) * dTheta, dTheta, glm::length(p - previous));
+        previous = p;
+    }
+}
+
+sim::Polygon contour(const CircleShape& circle, double maxSpacing)
+{
+    return sim::circle(circle.center, circle.radius, maxSpacing);
+}
+
+// Vertices at equal arc length: uniform parameter steps would crowd the ends of a slim ellipse
+// with edges far below maxSpacing/2, which the tracker would only collapse again.
+sim::Polygon contour(const EllipseShape& ellipse, double maxSpacing)
+{
+    double length = 0.0;
+    marchEllipse(ellipse.radii, maxSpacing, [&length](double, double, double chord) { length += chord; });
+    const auto count = static_cast<std::size_t>(std::max(kMinVertices, std::ceil(length / maxSpacing)));
+    const double spacing = length / static_cast<double>(count);
+
+    sim::Polygon polygon;
+    polygon.reserve(count);
+    double walked = 0.0;
+    marchEllipse(ellipse.radii, maxSpacing, [&](double theta, double dTheta, double chord) {
+        while (polygon.size() < count && walked + chord >= static_cast<double>(polygon.size()) * spacing) {
+            const double f = chord > 0.0 ? (static_cast<double>(polygon.size()) * spacing - walked) / chord : 0.0;
+            polygon.push_back(ellipse.center + ellipsePoint(ellipse.radii, theta + f * dTheta));
+        }
+        walked += chord;
+    });
+    // The chord sum slightly underestimates the arc; resampling guarantees the bound regardless.
+    return sim::resample(polygon, maxSpacing);
+}
+
+sim::Polygon contour(const RectShape& rect, double maxSpacing)
+{
+    // Along the top edge first: positive area.
+    const sim::Vec2 p = rect.topLeft;
+    return sim::resample({p, p + sim::Vec2(rect.size.x, 0.0), p + rect.size, p + sim::Vec2(0.0, rect.size.y)}, maxSpacing);
+}
+
+sim::Polygon contour(const PolygonShape& shape, double maxSpacing)
+{
+    sim::Polygon polygon = sim::resample(shape.points, maxSpacing);
+    if (sim::signedArea(polygon) < 0.0)
+        std::reverse(polygon.begin(), polygon.end());
+    return polygon;
+}
+
+// Upper bounds on the perimeter and on the vertices kept from the input.
+double perimeterBound(const CircleShape& c) { return 2.0 * std::numbers::pi * c.radius; }
+double perimeterBound(const EllipseShape& e) { return 2.0 * std::numbers::pi * std::max(e.radii.x, e.radii.y); }
+double perimeterBound(const RectShape& r) { return 2.0 * (r.size.x + r.size.y); }
+double perimeterBound(const PolygonShape& p) { return sim::perimeter(p.points); }
+double cornerCount(const CircleShape&) { return 0.0; }
+double cornerCount(const EllipseShape&) { return 0.0; }
+double cornerCount(const RectShape&) { return 4.0; }
+double cornerCount(const PolygonShape& p) { return static_cast<double>(p.points.size()); }
+
+} // namespace
+
+std::vector<sim::Polygon> shapeContours(const Shape& shape, double maxSpacing)
+{
+    return {std::visit([maxSpacing](const auto& s) { return contour(s, maxSpacing); }, shape)};
+}
+
+double shapeVertexBound(const Shape& shape, double maxSpacing)
+{
+    // Each edge of length L becomes ceil(L / maxSpacing) <= L / maxSpacing + 1 edges; curves get at
+    // least kMinVertices and at most one extra vertex from rounding up.
+    return std::visit([maxSpacing](const auto& s) { return perimeterBound(s) / maxSpacing + cornerCount(s); }, shape)
+           + kMinVertices + 1.0;
+}
+
+} // namespace vf::model

@@ -1,0 +1,66 @@
+#include "render/BufferedWriter.h"
+
+#include <charconv>
+
+namespace vf::render {
+namespace {
+constexpr std::size_t kChunkSize = 1 << 16;
+}
+
+BufferedWriter::BufferedWriter(QIODevice& device) : m_device(device)
+{
+    m_buffer.reserve(kChunkSize + 64);
+}
+
+BufferedWriter& BufferedWriter::operator<<(std::string_view text)
+{
+    m_buffer.append(text);
+    flushIfFull();
+    return *this;
+}
+
+BufferedWriter& BufferedWriter::operator<<(const QString& text)
+{
+    const QByteArray utf8 = text.toUtf8();
+    return *this << std::string_view(utf8.constData(), static_cast<std::size_t>(utf8.size()));
+}
+
+BufferedWriter& BufferedWriter::operator<<(char c)
+{
+    m_buffer.push_back(c);
+    flushIfFull();
+    return *this;
+}
+
+BufferedWriter& BufferedWriter::operator<<(double value)
+{
+    char text[32]; // the longest shortest-round-trip double is 24 characters
+    const std::to_chars_result result = std::to_chars(text, text + sizeof text, value);
+    m_buffer.append(text, result.ptr);
+    flushIfFull();
+    return *this;
+}
+
+QString BufferedWriter::finish()
+{
+    flush();
+    return m_error;
+}
+
+void BufferedWriter::flushIfFull()
+{
+    if (m_buffer.size() >= kChunkSize)
+        flush();
+}
+
+void BufferedWriter::flush()
+{
+    if (m_error.isEmpty() && !m_buffer.empty()) {
+        const auto size = static_cast<qint64>(m_buffer.size());
+        if (m_device.write(m_buffer.data(), size) != size)
+            m_error = QStringLiteral("write failed: %1").arg(m_device.errorString());
+    }
+    m_buffer.clear();
+}
+
+} // namespace vf::render

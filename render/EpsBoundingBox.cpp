@@ -1,0 +1,57 @@
+#include "render/EpsBoundingBox.h"
+
+namespace vf::render {
+
+EpsBoundingBoxFilter::EpsBoundingBoxFilter(QIODevice& out, int width, int height)
+    : m_out(out), m_box(QByteArrayLiteral("0 0 ") + QByteArray::number(width) + ' ' + QByteArray::number(height))
+{
+}
+
+cairo_status_t EpsBoundingBoxFilter::write(void* closure, const unsigned char* data, unsigned int length)
+{
+    auto* self = static_cast<EpsBoundingBoxFilter*>(closure);
+    return self->filter(reinterpret_cast<const char*>(data), length) ? CAIRO_STATUS_SUCCESS
+                                                                     : CAIRO_STATUS_WRITE_ERROR;
+}
+
+QString EpsBoundingBoxFilter::finish()
+{
+    if (!m_line.isEmpty())
+        forward(m_line.constData(), m_line.size());
+    m_line.clear();
+    return m_error;
+}
+
+bool EpsBoundingBoxFilter::filter(const char* data, qint64 length)
+{
+    qint64 i = 0;
+    while (m_inHeader && i < length) {
+        const char c = data[i++];
+        m_line += c;
+        if (c == '\n' && !forwardLine())
+            return false;
+    }
+    return i == length || forward(data + i, length - i);
+}
+
+bool EpsBoundingBoxFilter::forwardLine()
+{
+    if (m_line.startsWith("%%BoundingBox:"))
+        m_line = "%%BoundingBox: " + m_box + '\n';
+    else if (m_line.startsWith("%%PageBoundingBox:"))
+        m_line = "%%PageBoundingBox: " + m_box + '\n';
+    else if (m_line.startsWith("%%EndPageSetup"))
+        m_inHeader = false;
+    const bool written = forward(m_line.constData(), m_line.size());
+    m_line.clear();
+    return written;
+}
+
+bool EpsBoundingBoxFilter::forward(const char* data, qint64 length)
+{
+    if (m_error.isEmpty() && m_out.write(data, length) != length)
+        m_error = QStringLiteral("write failed: %1").arg(m_out.errorString());
+    return m_error.isEmpty();
+}
+
+} // namespace vf::render

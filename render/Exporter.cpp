@@ -1,0 +1,93 @@
+#include "render/Exporter.h"
+
+#include "model/AtomicFile.h"
+#include "render/Writers.h"
+
+#include <QFileInfo>
+
+#include <array>
+#include <cmath>
+
+namespace vf::render {
+namespace {
+
+using Writer = QString (*)(const model::Drawing&, const ExportOptions&, QIODevice&);
+
+struct Format {
+    const char* suffix; // lower case, without the dot
+    Writer write;
+};
+
+constexpr std::array kFormats{
+    Format{"svg", writeSvg},
+    Format{"pdf", writePdf},
+    Format{"eps", writeEps},
+    Format{"png", writePng},
+};
+
+const Format* formatFor(const QString& path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    for (const Format& format : kFormats) {
+        if (suffix == QLatin1String(format.suffix))
+            return &format;
+    }
+    return nullptr;
+}
+
+bool isPositive(double value) { return std::isfinite(value) && value > 0; }
+
+QString checkRegion(const model::DrawnRegion& region)
+{
+    for (const sim::Polygon& contour : region.contours) {
+        for (const sim::Vec2& p : contour) {
+            if (!std::isfinite(p.x) || !std::isfinite(p.y))
+                return QStringLiteral("region \"%1\" has a non-finite vertex").arg(region.name);
+        }
+    }
+    return {};
+}
+
+// Writers trust their input; everything they could choke on is turned away here, before the file
+// is touched.
+QString check(const model::Drawing& drawing, const ExportOptions& options)
+{
+    if (!isPositive(drawing.width) || !isPositive(drawing.height))
+        return QStringLiteral("canvas size %1 x %2 is not positive").arg(drawing.width).arg(drawing.height);
+    if (!isPositive(options.pageWidth))
+        return QStringLiteral("page width %1 pt is not positive").arg(options.pageWidth);
+    if (!isPositive(options.dpi))
+        return QStringLiteral("resolution %1 dpi is not positive").arg(options.dpi);
+    if (!std::isfinite(options.bezierTolerance) || options.bezierTolerance < 0)
+        return QStringLiteral("Bézier tolerance %1 is not a length (0 picks the default)").arg(options.bezierTolerance);
+    for (const model::DrawnRegion& region : drawing.regions) {
+        if (QString error = checkRegion(region); !error.isEmpty())
+            return error;
+    }
+    return {};
+}
+
+QString failure(const QString& path, const QString& what)
+{
+    return path + QStringLiteral(": ") + what.simplified(); // one line, whatever the cause said
+}
+
+} // namespace
+
+QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options)
+{
+    const Format* format = formatFor(path);
+    if (!format)
+        return failure(path, QStringLiteral("unknown export format (use .svg, .pdf, .eps or .png)"));
+    if (const QString error = check(drawing, options); !error.isEmpty())
+        return failure(path, error);
+
+    return model::saveAtomically(path, [&](QIODevice& file) { return format->write(drawing, options, file); });
+}
+
+bool isExportSuffix(const QString& path)
+{
+    return formatFor(path) != nullptr;
+}
+
+} // namespace vf::render

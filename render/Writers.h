@@ -1,0 +1,18 @@
+#pragma once
+// The format writers behind exportDrawing. Each writes one whole file into `out` and returns an
+// empty string or what went wrong (without the path; the caller owns the file and names it).
+// They expect a drawing and options already checked by exportDrawing.
+#include "model/Drawing.h"
+#include "render/Exporter.h"
+
+#include <QIODevice>
+#include <QString>
+
+namespace vf::render {
+
+QString writeSvg(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+QString writePdf(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+QString writeEps(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+QString writePng(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+
+} // namespace vf::render

@@ -1,0 +1,654 @@
+// Export formats end to end: what the files contain, read back by our own parser and by the real
+// readers (xmllint, rsvg-convert, qpdf, pdftoppm, Ghostscript), and atomic replacement on failure.
+// Runs with a QCoreApplication only (QTEST_GUILESS_MAIN): PNG export must not need a GUI.
+#include "TestGeometry.h"
+
+#include "render/Exporter.h"
+#include "render/PathEmitter.h"
+#include "render/Writers.h"
+
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QXmlStreamReader>
+#include <QtTest>
+
+#include <charconv>
+
+using namespace vf;
+using sim::Polygon;
+using sim::Vec2;
+
+Q_DECLARE_METATYPE(model::Drawing)
+
+namespace {
+
+const QString kSvgNamespace = QStringLiteral("http://www.w3.org/2000/svg");
+const QString kInkscapeNamespace = QStringLiteral("http://www.inkscape.org/namespaces/inkscape");
+
+// ---- the drawing every format is checked with ------------------------------------------------
+
+const QColor kBackground(255, 224, 160);
+const QColor kDiscColor(230, 57, 70);
+const QColor kRingColor(29, 53, 87);
+
+model::Drawing probeDrawing()
+{
+    model::Drawing drawing;
+    drawing.width = 1.0;
+    drawing.height = 0.75;
+    drawing.background = kBackground;
+    drawing.regions = {
+        {QStringLiteral("disc"), kDiscColor, true, {test::circlePolygon({0.25, 0.375}, 0.15, 240)}},
+        {QStringLiteral("ring"), kRingColor, true,
+         {test::circlePolygon({0.7, 0.375}, 0.2, 300), test::circlePolygon({0.7, 0.375}, 0.08, 120)}},
+        {QStringLiteral("hidden"), QColor(0, 160, 0), false, {test::squarePolygon({0.42, 0.62}, 0.06, 10)}},
+    };
+    return drawing;
+}
+
+struct Probe {
+    const char* what;
+    Vec2 at; // canvas units
+    QColor expected;
+};
+
+// Interior points far from any edge, so antialiasing and Bézier tolerance cannot matter.
+std::vector<Probe> probes(const QColor& background)
+{
+    return {{"disc", {0.25, 0.375}, kDiscColor},
+            {"ring body", {0.84, 0.375}, kRingColor},
+            {"ring hole (even-odd)", {0.7, 0.375}, background},
+            {"outside", {0.05, 0.05}, background},
+            {"hidden region", {0.45, 0.65}, background}};
+}
+
+QString checkProbes(const QImage& image, const std::vector<Probe>& expected, const model::Drawing& drawing)
+{
+    if (image.isNull())
+        return QStringLiteral("no image");
+    for (const Probe& probe : expected) {
+        const int x = int(probe.at.x / drawing.width * image.width());
+        const int y = int(probe.at.y / drawing.height * image.height());
+        const QColor got = image.pixelColor(x, y);
+        const bool same = std::abs(got.red() - probe.expected.red()) <= 3
+                          && std::abs(got.green() - probe.expected.green()) <= 3
+                          && std::abs(got.blue() - probe.expected.blue()) <= 3
+                          && std::abs(got.alpha() - probe.expected.alpha()) <= 3;
+        if (!same)
+            return QStringLiteral("%1: got %2 alpha %3, expected %4 alpha %5")
+                .arg(QLatin1String(probe.what), got.name(), QString::number(got.alpha()),
+                     probe.expected.name(), QString::number(probe.expected.alpha()));
+    }
+    return {};
+}
+
+// ---- reading our SVG back without QtSvg ----------------------------------------------------
+
+struct ParsedPath {
+    QString id, label, fill, fillOpacity, fillRule;
+    std::vector<render::FittedContour> contours;
+};
+
+struct ParsedLayer {
+    QString id, label, groupMode, style;
+    std::vector<ParsedPath> paths;
+};
+
+struct ParsedSvg {
+    QString width, height, viewBox, backgroundFill;
+    QStringList ids;
+    std::vector<ParsedLayer> layers;
+    QString error;
+};
+
+// Absolute M/L/C/Z only, as our writer produces; anything else is an error.
+bool parsePathData(const std::string& d, std::vector<render::FittedContour>& contours)
+{
+    std::size_t i = 0;
+    char command = 0;
+    const auto skipSeparators = [&] {
+        while (i < d.size() && (d[i] == ' ' || d[i] == ',' || d[i] == '\n' || d[i] == '\t'))
+            ++i;
+    };
+    const auto number = [&](double& value) {
+        skipSeparators();
+        const auto [end, ec] = std::from_chars(d.data() + i, d.data() + d.size(), value);
+        i = std::size_t(end - d.data());
+        return ec == std::errc();
+    };
+    const auto point = [&](Vec2& p) { return number(p.x) && number(p.y); };
+    for (skipSeparators(); i < d.size(); skipSeparators()) {
+        if (std::isalpha(static_cast<unsigned char>(d[i])))
+            command = d[i++];
+        else if (command == 0 || command == 'Z')
+            return false;
+        render::PathSegment segment;
+        switch (command) {
+        case 'M':
+            contours.push_back({});
+            if (!point(contours.back().start))
+                return false;
+            command = 'L'; // further pairs are implicit line-tos
+            break;
+        case 'L':
+            segment.isLine = true;
+            if (contours.empty() || !point(segment.end))
+                return false;
+            contours.back().segments.push_back(segment);
+            break;
+        case 'C':
+            if (contours.empty() || !point(segment.control1) || !point(segment.control2) || !point(segment.end))
+                return false;
+            contours.back().segments.push_back(segment);
+            break;
+        case 'Z':
+            break;
+        default:
+            return false;
+        }
+    }
+    return true;
+}
+
+ParsedSvg parseSvg(const QString& fileName)
+{
+    ParsedSvg svg;
+    QFile file(fileName);
+    if (!file.open(QIODevice::ReadOnly)) {
+        svg.error = file.errorString();
+        return svg;
+    }
+    QXmlStreamReader xml(&file);
+    while (!xml.atEnd()) {
+        if (xml.readNext() != QXmlStreamReader::StartElement || xml.namespaceUri() != kSvgNamespace)
+            continue;
+        const QXmlStreamAttributes a = xml.attributes();
+        if (a.hasAttribute(QStringLiteral("id")))
+            svg.ids << a.value(QStringLiteral("id")).toString();
+        const auto inkscape = [&](const char* name) {
+            return a.value(kInkscapeNamespace, QLatin1String(name)).toString();
+        };
+        const auto plain = [&](const char* name) { return a.value(QLatin1String(name)).toString(); };
+        if (xml.name() == u"svg") {
+            svg.width = plain("width");
+            svg.height = plain("height");
+            svg.viewBox = plain("viewBox");
+        } else if (xml.name() == u"g") {
+            svg.layers.push_back({plain("id"), inkscape("label"), inkscape("groupmode"), plain("style"), {}});
+        } else if (xml.name() == u"rect") {
+            svg.backgroundFill = plain("fill");
+        } else if (xml.name() == u"path") {
+            ParsedPath path{plain("id"), inkscape("label"), plain("fill"), plain("fill-opacity"),
+                            plain("fill-rule"), {}};
+            if (svg.layers.empty() || !parsePathData(plain("d").toStdString(), path.contours)) {
+                svg.error = QStringLiteral("bad path %1").arg(path.id);
+                return svg;
+            }
+            svg.layers.back().paths.push_back(std::move(path));
+        }
+    }
+    if (xml.hasError())
+        svg.error = xml.errorString();
+    return svg;
+}
+
+Polygon verticesOf(const render::FittedContour& contour)
+{
+    Polygon vertices{contour.start};
+    for (const render::PathSegment& s : contour.segments)
+        vertices.push_back(s.end);
+    return vertices;
+}
+
+// ---- external readers --------------------------------------------------------------------
+
+struct Run {
+    int exitCode = -1;
+    QByteArray output;
+};
+
+Run run(const QString& program, const QStringList& arguments)
+{
+    QProcess process;
+    process.setProcessChannelMode(QProcess::MergedChannels);
+    process.start(program, arguments);
+    if (!process.waitForFinished(60000) || process.exitStatus() != QProcess::NormalExit)
+        return {-1, process.readAll()};
+    return {process.exitCode(), process.readAll()};
+}
+
+#define REQUIRE_TOOL(variable, name)                                                                     \
+    const QString variable = QStandardPaths::findExecutable(QStringLiteral(name));                       \
+    if (variable.isEmpty())                                                                              \
+        QSKIP(name " is not installed");
+
+#define EXPORT_OK(drawing, path, options)                                                                \
+    do {                                                                                                 \
+        const QString error_ = render::exportDrawing(drawing, path, options);                             \
+        QVERIFY2(error_.isEmpty(), qPrintable(error_));                                                   \
+    } while (false)
+
+QByteArray readAll(const QString& fileName)
+{
+    QFile file(fileName);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+bool writeFile(const QString& fileName, const QByteArray& content)
+{
+    QFile file(fileName);
+    return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
+}
+
+// Accepts `budget` bytes, then fails every write, like a full disk.
+class FailingDevice final : public QIODevice {
+public:
+    explicit FailingDevice(qint64 budget) : m_budget(budget) { open(QIODevice::WriteOnly); }
+
+protected:
+    qint64 readData(char*, qint64) override { return -1; }
+    qint64 writeData(const char*, qint64 length) override
+    {
+        if (length > m_budget) {
+            setErrorString(QStringLiteral("No space left on device"));
+            return -1;
+        }
+        m_budget -= length;
+        return length;
+    }
+
+private:
+    qint64 m_budget;
+};
+
+} // namespace
+
+class TestExport : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init();
+
+    void svgPolylineReadsBackExactly();
+    void svgIdsAreUniqueXmlNames();
+    void svgAcceptedByXmllint();
+    void svgRenderedByRsvg();
+    void svgBezierWithinTolerance();
+    void svgBezierKeepsSquareCorners();
+    void svgLargeRegionStreams();
+
+    void pdfPassesQpdfAndPdftoppm();
+    void epsHasPageBoundingBoxAndRendersInGhostscript_data();
+    void epsHasPageBoundingBoxAndRendersInGhostscript();
+
+    void pngSizeFollowsDpi_data();
+    void pngSizeFollowsDpi();
+    void pngColoursAndEvenOddHole();
+    void pngTransparentWithoutBackground();
+
+    void suffixSelectsFormat();
+    void missingDirectoryIsAnError();
+    void failedExportLeavesOldFileUntouched_data();
+    void failedExportLeavesOldFileUntouched();
+    void writersReportDeviceFailure_data();
+    void writersReportDeviceFailure();
+
+private:
+    QString path(const QString& name) const { return m_dir->filePath(name); }
+
+    std::unique_ptr<QTemporaryDir> m_dir;
+};
+
+void TestExport::init()
+{
+    m_dir = std::make_unique<QTemporaryDir>();
+    QVERIFY(m_dir->isValid());
+}
+
+void TestExport::svgPolylineReadsBackExactly()
+{
+    const model::Drawing drawing = probeDrawing();
+    const QString file = path(QStringLiteral("a.svg"));
+    render::ExportOptions options;
+    options.bezier = false;
+    EXPORT_OK(drawing, file, options);
+
+    const ParsedSvg svg = parseSvg(file);
+    QVERIFY2(svg.error.isEmpty(), qPrintable(svg.error));
+    QCOMPARE(svg.viewBox, QStringLiteral("0 0 1 0.75"));
+    QCOMPARE(svg.width, QStringLiteral("576pt"));
+    QCOMPARE(svg.height, QStringLiteral("432pt"));
+    QCOMPARE(svg.backgroundFill, kBackground.name());
+    QCOMPARE(svg.layers.size(), drawing.regions.size() + 1); // + the background layer
+
+    for (std::size_t r = 0; r < drawing.regions.size(); ++r) {
+        const model::DrawnRegion& region = drawing.regions[r];
+        const ParsedLayer& layer = svg.layers[r + 1];
+        QCOMPARE(layer.groupMode, QStringLiteral("layer"));
+        QCOMPARE(layer.label, region.name);
+        QCOMPARE(layer.style, region.visible ? QString() : QStringLiteral("display:none"));
+        QCOMPARE(layer.paths.size(), std::size_t(1));
+        const ParsedPath& path = layer.paths.front();
+        QCOMPARE(path.id, region.name);
+        QCOMPARE(path.label, region.name);
+        QCOMPARE(path.fill, region.color.name());
+        QCOMPARE(path.fillRule, QStringLiteral("evenodd"));
+        QCOMPARE(path.contours.size(), region.contours.size());
+        for (std::size_t c = 0; c < region.contours.size(); ++c) {
+            const Polygon back = verticesOf(path.contours[c]);
+            QVERIFY(back == region.contours[c]); // exact: shortest round-trip digits, nothing lost
+            for (std::size_t i = 0; i < back.size(); ++i)
+                QVERIFY(back[i] != back[(i + 1) % back.size()]);
+        }
+    }
+}
+
+void TestExport::svgIdsAreUniqueXmlNames()
+{
+    model::Drawing drawing;
+    const QStringList names{QStringLiteral("ink"),       QStringLiteral("ink"),
+                            QStringLiteral("1st coat"),  QString(),
+                            QStringLiteral("layer-ink"), QStringLiteral("a<&>\"b\nc\u00e9"),
+                            QStringLiteral("background")};
+    for (const QString& name : names)
+        drawing.regions.push_back({name, QColor(10, 20, 30, 128), true, {test::squarePolygon({0.1, 0.1}, 0.2, 1)}});
+    const QString file = path(QStringLiteral("ids.svg"));
+    EXPORT_OK(drawing, file, render::ExportOptions{});
+
+    const ParsedSvg svg = parseSvg(file);
+    QVERIFY2(svg.error.isEmpty(), qPrintable(svg.error));
+    QCOMPARE(QSet<QString>(svg.ids.begin(), svg.ids.end()).size(), svg.ids.size());
+    static const QRegularExpression ncName(QStringLiteral("^[A-Za-z_][A-Za-z0-9._-]*$"));
+    for (const QString& id : svg.ids)
+        QVERIFY2(ncName.match(id).hasMatch(), qPrintable(id));
+    QCOMPARE(svg.layers.size(), std::size_t(names.size() + 1));
+    for (qsizetype i = 0; i < names.size(); ++i) {
+        const ParsedPath& path = svg.layers[std::size_t(i) + 1].paths.front();
+        QCOMPARE(path.label, names[i]);
+        QCOMPARE(path.fillOpacity.toDouble(), 128 / 255.0);
+    }
+    QCOMPARE(svg.layers[1].paths.front().id, QStringLiteral("ink"));
+    QCOMPARE(svg.layers[2].paths.front().id, QStringLiteral("ink-2"));
+    QCOMPARE(svg.layers[3].paths.front().id, QStringLiteral("region-1st_coat"));
+}
+
+void TestExport::svgAcceptedByXmllint()
+{
+    REQUIRE_TOOL(xmllint, "xmllint");
+    const QString file = path(QStringLiteral("a.svg"));
+    EXPORT_OK(probeDrawing(), file, render::ExportOptions{});
+    const Run result = run(xmllint, {QStringLiteral("--noout"), file});
+    QVERIFY2(result.exitCode == 0, result.output.constData());
+    QVERIFY2(result.output.isEmpty(), result.output.constData());
+}
+
+void TestExport::svgRenderedByRsvg()
+{
+    REQUIRE_TOOL(rsvg, "rsvg-convert");
+    const model::Drawing drawing = probeDrawing();
+    for (const bool bezier : {false, true}) {
+        const QString svgFile = path(QStringLiteral("a.svg"));
+        const QString pngFile = path(QStringLiteral("rsvg.png"));
+        render::ExportOptions options;
+        options.bezier = bezier;
+        EXPORT_OK(drawing, svgFile, options);
+        const Run result = run(rsvg, {QStringLiteral("-w"), QStringLiteral("200"), QStringLiteral("-h"),
+                                      QStringLiteral("150"), QStringLiteral("-o"), pngFile, svgFile});
+        QVERIFY2(result.exitCode == 0, result.output.constData());
+        const QString mismatch = checkProbes(QImage(pngFile), probes(kBackground), drawing);
+        QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+    }
+}
+
+void TestExport::svgBezierWithinTolerance()
+{
+    model::Drawing drawing;
+    const Polygon circle = test::circlePolygon({0.5, 0.5}, 0.3, 800);
+    const Polygon wobbly = test::wobblyPolygon({0.5, 0.5}, 0.2, 500, 11);
+    drawing.regions = {{QStringLiteral("circle"), Qt::black, true, {circle}},
+                       {QStringLiteral("wobbly"), Qt::black, true, {wobbly}}};
+    for (const double tolerance : {0.0, 1e-3}) {
+        const QString file = path(QStringLiteral("bezier.svg"));
+        render::ExportOptions options;
+        options.bezierTolerance = tolerance;
+        EXPORT_OK(drawing, file, options);
+        const ParsedSvg svg = parseSvg(file);
+        QVERIFY2(svg.error.isEmpty(), qPrintable(svg.error));
+        const double bound = tolerance > 0 ? tolerance : render::defaultBezierTolerance(drawing);
+        const render::FittedContour& fittedCircle = svg.layers[1].paths.front().contours.front();
+        const render::FittedContour& fittedWobbly = svg.layers[2].paths.front().contours.front();
+        QVERIFY(test::endsFollowVertices(fittedCircle, circle));
+        QVERIFY(test::endsFollowVertices(fittedWobbly, wobbly));
+        QVERIFY(test::deviation(fittedCircle, circle) <= bound * 1.001);
+        QVERIFY(test::deviation(fittedWobbly, wobbly) <= bound * 1.001);
+        QVERIFY2(fittedCircle.segments.size() * 20 < circle.size(),
+                 qPrintable(QString::number(fittedCircle.segments.size())));
+    }
+}
+
+void TestExport::svgBezierKeepsSquareCorners()
+{
+    model::Drawing drawing;
+    drawing.regions = {{QStringLiteral("square"), Qt::black, true, {test::squarePolygon({0.25, 0.25}, 0.5, 40)}}};
+    const QString file = path(QStringLiteral("square.svg"));
+    EXPORT_OK(drawing, file, render::ExportOptions{});
+    const ParsedSvg svg = parseSvg(file);
+    QVERIFY2(svg.error.isEmpty(), qPrintable(svg.error));
+    const Polygon vertices = verticesOf(svg.layers[1].paths.front().contours.front());
+    QCOMPARE(vertices.size(), std::size_t(5)); // four corners, the last one repeating the start
+    for (const Vec2& v : vertices)
+        QVERIFY((v.x == 0.25 || v.x == 0.75) && (v.y == 0.25 || v.y == 0.75));
+    for (const render::PathSegment& s : svg.layers[1].paths.front().contours.front().segments)
+        QVERIFY(s.isLine);
+}
+
+// Moderate size (100k vertices, ~3.7 MB of path data: under libxml2's 10 MB attribute limit),
+// read back exactly by our parser and by xmllint.
+void TestExport::svgLargeRegionStreams()
+{
+    model::Drawing drawing;
+    const Polygon polygon = test::wobblyPolygon({0.5, 0.5}, 0.35, 100000, 5, 0.0);
+    drawing.regions = {{QStringLiteral("big"), Qt::black, true, {polygon}}};
+    const QString file = path(QStringLiteral("big.svg"));
+    render::ExportOptions options;
+    options.bezier = false;
+    EXPORT_OK(drawing, file, options);
+    const ParsedSvg svg = parseSvg(file);
+    QVERIFY2(svg.error.isEmpty(), qPrintable(svg.error));
+    QVERIFY(verticesOf(svg.layers[1].paths.front().contours.front()) == polygon);
+    if (const QString xmllint = QStandardPaths::findExecutable(QStringLiteral("xmllint")); !xmllint.isEmpty()) {
+        const Run result = run(xmllint, {QStringLiteral("--noout"), file});
+        QVERIFY2(result.exitCode == 0, result.output.constData());
+    }
+}
+
+void TestExport::pdfPassesQpdfAndPdftoppm()
+{
+    REQUIRE_TOOL(qpdf, "qpdf");
+    REQUIRE_TOOL(pdftoppm, "pdftoppm");
+    const model::Drawing drawing = probeDrawing();
+    const QString file = path(QStringLiteral("a.pdf"));
+    EXPORT_OK(drawing, file, render::ExportOptions{});
+    const Run check = run(qpdf, {QStringLiteral("--check"), file});
+    QVERIFY2(check.exitCode == 0, check.output.constData());
+
+    const Run raster = run(pdftoppm, {QStringLiteral("-png"), QStringLiteral("-r"), QStringLiteral("36"),
+                                      QStringLiteral("-singlefile"), file, path(QStringLiteral("pdf"))});
+    QVERIFY2(raster.exitCode == 0, raster.output.constData());
+    const QImage image(path(QStringLiteral("pdf.png")));
+    QCOMPARE(image.size(), QSize(288, 216)); // 576 x 432 pt at half a pixel per point
+    const QString mismatch = checkProbes(image, probes(kBackground), drawing);
+    QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+}
+
+void TestExport::epsHasPageBoundingBoxAndRendersInGhostscript_data()
+{
+    QTest::addColumn<bool>("background");
+    QTest::newRow("background") << true;
+    QTest::newRow("no background") << false; // cairo alone would crop to the ink
+}
+
+void TestExport::epsHasPageBoundingBoxAndRendersInGhostscript()
+{
+    QFETCH(bool, background);
+    REQUIRE_TOOL(gs, "gs");
+    const model::Drawing drawing = probeDrawing();
+    const QString file = path(QStringLiteral("a.eps"));
+    render::ExportOptions options;
+    options.background = background;
+    EXPORT_OK(drawing, file, options);
+
+    const QByteArray eps = readAll(file);
+    QVERIFY(eps.startsWith("%!PS-Adobe-3.0 EPSF-3.0"));
+    QVERIFY(eps.contains("\n%%BoundingBox: 0 0 576 432\n"));
+    QCOMPARE(eps.count("BoundingBox:"), eps.count("BoundingBox: 0 0 576 432"));
+
+    const QString png = path(QStringLiteral("eps.png"));
+    const Run result = run(gs, {QStringLiteral("-q"), QStringLiteral("-dSAFER"), QStringLiteral("-dBATCH"),
+                                QStringLiteral("-dNOPAUSE"), QStringLiteral("-sDEVICE=png16m"),
+                                QStringLiteral("-dEPSCrop"), QStringLiteral("-r36"),
+                                QStringLiteral("-sOutputFile=") + png, file});
+    QVERIFY2(result.exitCode == 0, result.output.constData());
+    const QImage image(png);
+    QCOMPARE(image.size(), QSize(288, 216));
+    // Ghostscript paints on white where there is no background.
+    const QString mismatch = checkProbes(image, probes(background ? kBackground : QColor(Qt::white)), drawing);
+    QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+}
+
+void TestExport::pngSizeFollowsDpi_data()
+{
+    QTest::addColumn<double>("dpi");
+    QTest::addColumn<QSize>("size");
+    QTest::newRow("72 dpi") << 72.0 << QSize(576, 432);
+    QTest::newRow("36 dpi") << 36.0 << QSize(288, 216);
+    QTest::newRow("300 dpi") << 300.0 << QSize(2400, 1800);
+}
+
+void TestExport::pngSizeFollowsDpi()
+{
+    QFETCH(double, dpi);
+    QFETCH(QSize, size);
+    const QString file = path(QStringLiteral("a.png"));
+    render::ExportOptions options;
+    options.dpi = dpi;
+    EXPORT_OK(probeDrawing(), file, options);
+    const QImage image(file);
+    QCOMPARE(image.size(), size);
+    QCOMPARE(image.dotsPerMeterX(), qRound(dpi / 0.0254));
+}
+
+void TestExport::pngColoursAndEvenOddHole()
+{
+    const model::Drawing drawing = probeDrawing();
+    const QString file = path(QStringLiteral("a.png"));
+    render::ExportOptions options;
+    options.dpi = 36;
+    EXPORT_OK(drawing, file, options);
+    const QString mismatch = checkProbes(QImage(file), probes(kBackground), drawing);
+    QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+}
+
+void TestExport::pngTransparentWithoutBackground()
+{
+    const model::Drawing drawing = probeDrawing();
+    const QString file = path(QStringLiteral("a.png"));
+    render::ExportOptions options;
+    options.dpi = 36;
+    options.background = false;
+    EXPORT_OK(drawing, file, options);
+    const QImage image = QImage(file).convertToFormat(QImage::Format_ARGB32);
+    QVERIFY(image.hasAlphaChannel());
+    const QString mismatch = checkProbes(image, probes(QColor(0, 0, 0, 0)), drawing);
+    QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+}
+
+void TestExport::suffixSelectsFormat()
+{
+    for (const char* name : {"a.svg", "a.SVG", "b.Pdf", "c.eps", "d.png"})
+        QVERIFY2(render::isExportSuffix(QLatin1String(name)), name);
+    for (const char* name : {"a.txt", "svg", "a.svg.bak", "a"})
+        QVERIFY2(!render::isExportSuffix(QLatin1String(name)), name);
+
+    const QString file = path(QStringLiteral("a.txt"));
+    const QString error = render::exportDrawing(probeDrawing(), file, render::ExportOptions{});
+    QVERIFY(error.startsWith(file + QStringLiteral(": ")));
+    QVERIFY(!QFile::exists(file));
+
+    // Upper-case suffix still writes the right format.
+    const QString upper = path(QStringLiteral("A.PDF"));
+    EXPORT_OK(probeDrawing(), upper, render::ExportOptions{});
+    QVERIFY(readAll(upper).startsWith("%PDF-"));
+}
+
+void TestExport::missingDirectoryIsAnError()
+{
+    const QString file = path(QStringLiteral("no/such/dir/a.svg"));
+    const QString error = render::exportDrawing(probeDrawing(), file, render::ExportOptions{});
+    QVERIFY(error.startsWith(file + QStringLiteral(": ")));
+    QVERIFY(!error.contains(u'\n'));
+    QVERIFY(!QFile::exists(file));
+}
+
+void TestExport::failedExportLeavesOldFileUntouched_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<model::Drawing>("drawing");
+    QTest::addColumn<double>("dpi");
+    model::Drawing bad = probeDrawing();
+    bad.regions[1].contours[1][7].x = std::numeric_limits<double>::quiet_NaN();
+    // The PNG case fails inside the writer, after the temporary file was opened.
+    QTest::newRow("image too large") << QStringLiteral("old.png") << probeDrawing() << 1e7;
+    QTest::newRow("non-finite vertex") << QStringLiteral("old.svg") << bad << 150.0;
+}
+
+void TestExport::failedExportLeavesOldFileUntouched()
+{
+    QFETCH(QString, name);
+    QFETCH(model::Drawing, drawing);
+    QFETCH(double, dpi);
+    const QString file = path(name);
+    const QByteArray old = "the previous export\n";
+    QVERIFY(writeFile(file, old));
+    render::ExportOptions options;
+    options.dpi = dpi;
+    const QString error = render::exportDrawing(drawing, file, options);
+    QVERIFY(error.startsWith(file + QStringLiteral(": ")));
+    QVERIFY(!error.contains(u'\n'));
+    QCOMPARE(readAll(file), old);
+    QCOMPARE(QDir(m_dir->path()).entryList(QDir::Files), QStringList{name}); // no temporary left
+
+    options.dpi = 36; // and a good export does replace it
+    EXPORT_OK(probeDrawing(), file, options);
+    QVERIFY(readAll(file) != old);
+}
+
+void TestExport::writersReportDeviceFailure_data()
+{
+    QTest::addColumn<int>("format");
+    QTest::addColumn<qint64>("budget");
+    QTest::newRow("svg") << 0 << qint64(100);
+    QTest::newRow("pdf") << 1 << qint64(100);
+    QTest::newRow("eps") << 2 << qint64(100);
+    QTest::newRow("png") << 3 << qint64(100);
+    QTest::newRow("svg, no space at all") << 0 << qint64(0);
+    QTest::newRow("eps, no space at all") << 2 << qint64(0);
+}
+
+void TestExport::writersReportDeviceFailure()
+{
+    using Writer = QString (*)(const model::Drawing&, const render::ExportOptions&, QIODevice&);
+    const Writer writers[] = {render::writeSvg, render::writePdf, render::writeEps, render::writePng};
+    QFETCH(int, format);
+    QFETCH(qint64, budget);
+    FailingDevice device(budget);
+    render::ExportOptions options;
+    options.dpi = 36;
+    const QString error = writers[format](probeDrawing(), options, device);
+    QVERIFY(!error.isEmpty());
+}
+
+QTEST_GUILESS_MAIN(TestExport)
+#include "tst_export.moc"
