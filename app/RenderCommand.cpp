@@ -1,6 +1,7 @@
 // `vectorfluid render SCENE ...`: run a scene headless and write files (DESIGN §3).
 #include "app/Commands.h"
 #include "app/RenderOptions.h"
+#include "model/AtomicFile.h"
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
 #include "render/Exporter.h"
@@ -9,7 +10,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QTextStream>
 
 #include <chrono>
@@ -52,10 +52,8 @@ QString writeStats(const QString& path, const model::Drawing& drawing, const Run
                                {"sim_seconds", totals.simSeconds}}},
         {"limit_reached", totals.limitHit},
     };
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(root).toJson()) < 0 || !file.commit())
-        return QStringLiteral("%1: %2").arg(path, file.errorString());
-    return {};
+    const QByteArray json = QJsonDocument(root).toJson();
+    return model::saveAtomically(path, [&json](QIODevice& file) { return model::writeAll(file, json); });
 }
 
 QString framePath(const QString& dir, qint64 step)
