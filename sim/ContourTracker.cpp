@@ -200,6 +200,12 @@ void ContourTracker::addContour(int region, const Polygon& polygon)
     m_contours.push_back(std::move(c));
 }
 
+void ContourTracker::growTargetAreasAround(Vec2 p, double area)
+{
+    for (Contour& c : m_contours)
+        c.targetArea += windingNumber(c.positions, p) * area;
+}
+
 void ContourTracker::setContours(std::vector<Contour> contours)
 {
     m_contours = std::move(contours);

@@ -40,6 +40,10 @@ public:
     // `flow` and `t` feed the spacing's vorticity term.
     bool applyMotion(const MotionMap& map, const Flow& flow, double t);
 
+    // Raises the area-correction target of every contour winding around `p` by `area` per turn:
+    // an ink drop landing inside a contour makes it enclose the drop as well.
+    void growTargetAreasAround(Vec2 p, double area);
+
     // Replaces all contours (snapshot restore); counts are recomputed.
     void setContours(std::vector<Contour> contours);
 

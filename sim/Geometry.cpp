@@ -29,6 +29,22 @@ double perimeter(const Polygon& polygon)
     return length;
 }
 
+int windingNumber(const Polygon& polygon, Vec2 p)
+{
+    // Sunday's crossing rule: count upward crossings left of p, minus downward ones.
+    int winding = 0;
+    const std::size_t n = polygon.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2 a = polygon[i], b = polygon[(i + 1) % n];
+        const double side = (b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y);
+        if (a.y <= p.y && b.y > p.y && side > 0)
+            ++winding;
+        else if (a.y > p.y && b.y <= p.y && side < 0)
+            --winding;
+    }
+    return winding;
+}
+
 Polygon resample(const Polygon& polygon, double maxSpacing)
 {
     Polygon out;

@@ -17,6 +17,9 @@ using Polygon = std::vector<Vec2>;
 double signedArea(const Polygon& polygon);
 double perimeter(const Polygon& polygon);
 
+// How many times the polygon winds around p, counter-clockwise in raw coordinates positive.
+int windingNumber(const Polygon& polygon, Vec2 p);
+
 // Splits every edge into equal pieces no longer than maxSpacing; the original vertices stay.
 Polygon resample(const Polygon& polygon, double maxSpacing);
 

@@ -48,8 +48,12 @@ int ReferenceSimulation::drop(Vec2 center, double radius)
             return center + Vec2(radius, 0.0);  // the centre itself: any direction is as good
         return center + d * std::sqrt(1.0 + r2 / l2);
     };
+    // A contour around the centre ends up enclosing the new drop too: π r² more, counted as the
+    // drop's own polygon so that the ring it leaves keeps exactly the area it had.
+    const Polygon dropped = circle(center, radius, m_settings.tracking.maxSpacing);
+    m_tracker.growTargetAreasAround(center, signedArea(dropped));
     m_tracker.applyMotion(push, *m_flow, time());
-    return addRegion({circle(center, radius, m_settings.tracking.maxSpacing)});
+    return addRegion({dropped});
 }
 
 void ReferenceSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration)

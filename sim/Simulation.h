@@ -34,8 +34,9 @@ public:
     // Adds a region made of closed contours (filled together, even-odd); returns its index.
     virtual int addRegion(const std::vector<Polygon>& contours) = 0;
     // A marbling ink drop: every existing contour point P moves to C + (P−C)·sqrt(1 + r²/|P−C|²),
-    // which pushes old ink outward and keeps each region's area, then a circle of radius r at C
-    // becomes a new region, whose index is returned.
+    // which pushes old ink outward and keeps its area, then a circle of radius r at C becomes a new
+    // region, whose index is returned. Regions are painted in order, so ink the drop lands in
+    // shows as a ring around it: its contour then encloses the drop too (area + π r²).
     virtual int drop(Vec2 center, double radius) = 0;
     // The stylus moved from `from` to `to` during `duration` seconds; acts during the next step.
     // Only a fluid flow responds.
