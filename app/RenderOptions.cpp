@@ -58,6 +58,12 @@ std::optional<RenderOptions> parseRenderOptions(const QStringList& args, QString
             o.outputs << value;
             if (!ok)
                 error = QStringLiteral("--out %1: the format must be .svg, .pdf, .eps or .png").arg(value);
+        } else if (a == QLatin1String("--dpi")) {
+            const double dpi = value.toDouble(&ok);
+            ok = ok && std::isfinite(dpi) && dpi > 0.0 && dpi <= 4800.0;
+            o.exportOptions.dpi = dpi;
+            if (!ok)
+                error = QStringLiteral("--dpi: '%1' is not a resolution between 0 and 4800").arg(value);
         } else if (a == QLatin1String("--frames")) {
             o.framesDir = value;
         } else if (a == QLatin1String("--every")) {

@@ -8,7 +8,7 @@ namespace {
 
 const char* usage =
     "usage: vectorfluid render SCENE [--steps N] [--dt S] [--backend reference|opencl] [--out FILE]...\n"
-    "                          [--polyline] [--frames DIR --every K] [--stats FILE.json]\n"
+    "                          [--polyline] [--dpi N] [--frames DIR --every K] [--stats FILE.json]\n"
     "       vectorfluid devices\n";
 
 } // namespace
