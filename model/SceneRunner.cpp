@@ -54,9 +54,27 @@ void SceneRunner::applyDrops(double from, double to)
         const auto& drop = std::get<DropStroke>(m_scene.strokes[i]);
         m_simulation->drop(drop.center, drop.radius);
         ++m_dropsLanded;
-        m_looks.push_back({drop.name.isEmpty() ? QStringLiteral("drop %1").arg(m_dropsLanded) : drop.name, drop.color, true});
+        m_looks.push_back({drop.name.isEmpty() ? unusedDropName() : drop.name, drop.color, true});
         m_dropDone[i] = true;
     }
+}
+
+QString SceneRunner::unusedDropName() const
+{
+    // "drop N" after the drops landed so far, skipping names a region or a named drop already
+    // has: region names become SVG ids and layer labels, so they stay unique.
+    auto taken = [this](const QString& name) {
+        for (const Stroke& s : m_scene.strokes)
+            if (const auto* d = std::get_if<DropStroke>(&s); d && d->name == name)
+                return true;
+        for (const RegionLook& look : m_looks)
+            if (look.name == name)
+                return true;
+        return false;
+    };
+    for (int n = m_dropsLanded;; ++n)
+        if (const QString name = QStringLiteral("drop %1").arg(n); !taken(name))
+            return name;
 }
 
 void SceneRunner::applyStylus(double from, double to)

@@ -32,6 +32,7 @@ public:
 private:
     void applyDrops(double from, double to);
     void applyStylus(double from, double to);
+    QString unusedDropName() const;
 
     struct RegionLook {
         QString name;
