@@ -24,24 +24,29 @@ double FluidFlow::blend(double t) const
     return span > 0.0 ? std::clamp((t - m_stepStart) / span, 0.0, 1.0) : 1.0;
 }
 
+namespace {
+
+// The field `s` of the way from `before` to `now`; `sample` reads one value out of a field.
+template <typename Sample>
+auto interpolate(double s, const MacVelocity& before, const MacVelocity& now, Sample sample)
+{
+    const auto end = sample(now);
+    if (s == 1.0)
+        return end;
+    const auto start = sample(before);
+    return start + s * (end - start);
+}
+
+} // namespace
+
 Vec2 FluidFlow::velocity(Vec2 p, double t) const
 {
-    const double s = blend(t);
-    const Vec2 now = m_solver.velocity().sample(p);
-    if (s == 1.0)
-        return now;
-    const Vec2 before = m_previous.sample(p);
-    return before + s * (now - before);
+    return interpolate(blend(t), m_previous, m_solver.velocity(), [p](const MacVelocity& f) { return f.sample(p); });
 }
 
 double FluidFlow::vorticity(Vec2 p, double t) const
 {
-    const double s = blend(t);
-    const double now = m_solver.velocity().vorticity(p);
-    if (s == 1.0)
-        return now;
-    const double before = m_previous.vorticity(p);
-    return before + s * (now - before);
+    return interpolate(blend(t), m_previous, m_solver.velocity(), [p](const MacVelocity& f) { return f.vorticity(p); });
 }
 
 } // namespace vf::sim

@@ -20,6 +20,14 @@ inline QStringList backendNames()
     return {QStringLiteral("reference")};
 }
 
+// The column and one row per backend, for tests that vary nothing else.
+inline void addBackendRows()
+{
+    addBackendColumn();
+    for (const QString& b : backendNames())
+        QTest::newRow(qPrintable(b)) << b;
+}
+
 inline std::unique_ptr<sim::Simulation> makeBackend(const QString& name, const sim::SimulationSettings& settings)
 {
     Q_UNUSED(name);

@@ -74,9 +74,7 @@ private slots:
 
 void TestMarbling::crossingStrokesKeepTopology_data()
 {
-    test::addBackendColumn();
-    for (const QString& b : test::backendNames())
-        QTest::newRow(qPrintable(b)) << b;
+    test::addBackendRows();
 }
 
 void TestMarbling::crossingStrokesKeepTopology()
@@ -153,9 +151,7 @@ void TestMarbling::dropPushesInkOutwardAndKeepsArea()
 
 void TestMarbling::vertexLimitStopsCleanly_data()
 {
-    test::addBackendColumn();
-    for (const QString& b : test::backendNames())
-        QTest::newRow(qPrintable(b)) << b;
+    test::addBackendRows();
 }
 
 void TestMarbling::vertexLimitStopsCleanly()

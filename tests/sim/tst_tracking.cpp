@@ -68,6 +68,17 @@ Polygon slottedDisk(double spacing)
     return sim::resample(disk, spacing);
 }
 
+// Backend × {uniform, adaptive} spacing.
+void addSpacingModeRows()
+{
+    test::addBackendColumn();
+    QTest::addColumn<bool>("adaptive");
+    for (const QString& b : test::backendNames()) {
+        QTest::newRow(qPrintable(b + "/uniform")) << b << false;
+        QTest::newRow(qPrintable(b + "/adaptive")) << b << true;
+    }
+}
+
 // Mean distance from the vertices of `points` to the closed polyline `curve`.
 double meanDistance(const Polygon& points, const Polygon& curve)
 {
@@ -124,12 +135,7 @@ void TestTracking::rungeKuttaIsFourthOrder()
 
 void TestTracking::edgesStayWithinSpacing_data()
 {
-    test::addBackendColumn();
-    QTest::addColumn<bool>("adaptive");
-    for (const QString& b : test::backendNames()) {
-        QTest::newRow(qPrintable(b + "/uniform")) << b << false;
-        QTest::newRow(qPrintable(b + "/adaptive")) << b << true;
-    }
+    addSpacingModeRows();
 }
 
 void TestTracking::edgesStayWithinSpacing()
@@ -152,9 +158,7 @@ void TestTracking::edgesStayWithinSpacing()
 
 void TestTracking::timeRewindingBeatsLinearMidpoint_data()
 {
-    test::addBackendColumn();
-    for (const QString& b : test::backendNames())
-        QTest::newRow(qPrintable(b)) << b;
+    test::addBackendRows();
 }
 
 void TestTracking::timeRewindingBeatsLinearMidpoint()
@@ -220,12 +224,7 @@ void TestTracking::singleVortexReturns()
 
 void TestTracking::slottedDiskKeepsCorners_data()
 {
-    test::addBackendColumn();
-    QTest::addColumn<bool>("adaptive");
-    for (const QString& b : test::backendNames()) {
-        QTest::newRow(qPrintable(b + "/uniform")) << b << false;
-        QTest::newRow(qPrintable(b + "/adaptive")) << b << true;
-    }
+    addSpacingModeRows();
 }
 
 void TestTracking::slottedDiskKeepsCorners()
@@ -246,9 +245,7 @@ void TestTracking::slottedDiskKeepsCorners()
 
 void TestTracking::adaptiveSpacingSavesVertices_data()
 {
-    test::addBackendColumn();
-    for (const QString& b : test::backendNames())
-        QTest::newRow(qPrintable(b)) << b;
+    test::addBackendRows();
 }
 
 void TestTracking::adaptiveSpacingSavesVertices()
