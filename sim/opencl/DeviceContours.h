@@ -1,0 +1,51 @@
+#pragma once
+// The contour tracker of sim/ContourTracker on an OpenCL device, float32 positions: RK4 advection
+// (eq. 1), adaptive spacing (eqs. 3–7) with a counting-sort proximity grid and Gaussian smoothing
+// along contours, refinement by the time-rewinding split (eq. 2) and collapse, kept contiguous
+// and ordered by stream compaction, the optional area correction, and ink drops.
+#include "sim/Tracking.h"
+#include "sim/opencl/Device.h"
+#include "sim/opencl/FlowBinding.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vf::sim::opencl {
+
+class DeviceContours {
+public:
+    // `flowSource` is the OpenCL C that defines flowVelocity/flowVorticity (FlowBinding.h).
+    // Throws DeviceError.
+    DeviceContours(Device& device, const TrackingSettings& settings, const std::string& flowSource);
+    ~DeviceContours();
+
+    // As ContourTracker::addContour (resampled so no edge exceeds d_max; area target set).
+    void addContour(int region, const Polygon& polygon);
+    void growTargetAreasAround(Vec2 p, double area);
+
+    // As ContourTracker::strainInSpacings, for the substep count: one scalar comes back.
+    double strainInSpacings(const FlowBinding& flow, double t, double dt);
+
+    // RK4 from flow.t0 to flow.t1 through `flow`, then spacing, refinement, area correction.
+    // False when refinement stopped at max_vertices.
+    bool advect(const FlowBinding& flow);
+
+    // The drop's push P → C + (P−C)·sqrt(1 + r²/|P−C|²) as the motion, then refinement (split
+    // vertices land on the pushed curve). `flow` and `t` feed the spacing's vorticity term.
+    bool drop(Vec2 center, double radius, const FlowBinding& flow, double t);
+
+    std::size_t vertexCount() const;  // known on the host after every step (one scalar read)
+
+    // Reads the geometry back (blocking). Positions widen to double; spacing as used last step.
+    std::vector<Contour> read() const;
+
+    // Bytes of device memory per vertex of capacity, all buffers that scale with vertices.
+    static std::size_t bytesPerVertex();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m;
+};
+
+} // namespace vf::sim::opencl

@@ -1,0 +1,42 @@
+#pragma once
+// The contract between the flow and the contour kernels on the device.
+//
+// Every contour kernel that needs the velocity takes, in this order, the arguments
+//     __global const float* u0, __global const float* v0,   // staggered field at time t0
+//     __global const float* u1, __global const float* v1,   // staggered field at time t1
+//     int nx, int ny, float hx, float hy, float t0, float t1
+// (FLOW_ARGS in flow.h.cl) and samples through
+//     float2 flowVelocity(FLOW_PARAMS, float2 p, float t);
+//     float  flowVorticity(FLOW_PARAMS, float2 p, float t);
+// The program prepends one definition of these two functions: flow_fluid.cl (bilinear MAC
+// sampling, linear in time between t0 and t1, as sim/FluidFlow) or the analytic flow's
+// expressions translated to OpenCL C (sim/opencl/AnalyticSource). Analytic flows ignore the
+// buffers, which are then 1-element placeholders.
+#include "sim/opencl/OpenCl.h"
+
+namespace vf::sim::opencl {
+
+struct FlowBinding {
+    cl::Buffer u0, v0, u1, v1;
+    int nx = 1, ny = 1;
+    float hx = 1.0f, hy = 1.0f;
+    double t0 = 0.0, t1 = 0.0;
+
+    // Sets the 10 flow arguments of `kernel` starting at argument `first`; returns the next index.
+    cl_uint bind(cl::Kernel& kernel, cl_uint first) const
+    {
+        kernel.setArg(first++, u0);
+        kernel.setArg(first++, v0);
+        kernel.setArg(first++, u1);
+        kernel.setArg(first++, v1);
+        kernel.setArg(first++, nx);
+        kernel.setArg(first++, ny);
+        kernel.setArg(first++, hx);
+        kernel.setArg(first++, hy);
+        kernel.setArg(first++, float(t0));
+        kernel.setArg(first++, float(t1));
+        return first;
+    }
+};
+
+} // namespace vf::sim::opencl
