@@ -7,6 +7,7 @@
 #include "render/Exporter.h"
 
 #include <QDir>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -56,6 +57,22 @@ QString writeStats(const QString& path, const model::Drawing& drawing, const Run
     return model::saveAtomically(path, [&json](QIODevice& file) { return model::writeAll(file, json); });
 }
 
+// Fails before any simulation when an output could not be written at the end.
+QString checkOutputFolders(const RenderOptions& options)
+{
+    QStringList files = options.outputs;
+    if (!options.statsFile.isEmpty())
+        files << options.statsFile;
+    for (const QString& file : files) {
+        const QFileInfo info(file);
+        if (!info.absoluteDir().exists())
+            return QStringLiteral("%1: the folder %2 does not exist").arg(file, info.absolutePath());
+    }
+    if (!options.framesDir.isEmpty() && !QDir().mkpath(options.framesDir))
+        return QStringLiteral("%1: cannot create the frames folder").arg(options.framesDir);
+    return {};
+}
+
 QString framePath(const QString& dir, qint64 step)
 {
     return QDir(dir).filePath(QStringLiteral("frame-%1.svg").arg(step, 6, 10, QLatin1Char('0')));
@@ -78,8 +95,8 @@ int renderCommand(const QStringList& arguments)
     }
     if (options->backend == QLatin1String("opencl"))
         QTextStream(stderr) << "vectorfluid: the OpenCL backend is not built yet; using the reference backend\n";
-    if (!options->framesDir.isEmpty() && !QDir().mkpath(options->framesDir)) {
-        fail(QStringLiteral("%1: cannot create the frames folder").arg(options->framesDir));
+    if (const QString error = checkOutputFolders(*options); !error.isEmpty()) {
+        fail(error);
         return BadInput;
     }
 

@@ -1,20 +1,95 @@
 #include "app/RenderOptions.h"
 
 #include <cmath>
+#include <functional>
+#include <map>
 
 namespace vf::app {
 
 namespace {
 
-// Reads the value after a flag; false (with `error` set) when it is missing.
-bool takeValue(const QStringList& args, qsizetype& i, QString& value, QString& error)
+// Each option that takes a value: reads it into the options, or returns what is wrong with it.
+using Setter = std::function<QString(RenderOptions&, const QString&)>;
+
+QString wholeNumber(const QString& option, const QString& value, qint64 minimum, qint64& into)
 {
-    if (i + 1 >= args.size()) {
-        error = QStringLiteral("%1 needs a value").arg(args[i]);
-        return false;
+    bool ok = false;
+    into = value.toLongLong(&ok);
+    if (ok && into >= minimum)
+        return {};
+    return QStringLiteral("%1: '%2' is not a whole number of at least %3").arg(option, value).arg(minimum);
+}
+
+QString positiveNumber(const QString& option, const QString& value, double maximum, double& into)
+{
+    bool ok = false;
+    into = value.toDouble(&ok);
+    if (ok && std::isfinite(into) && into > 0.0 && into <= maximum)
+        return {};
+    return QStringLiteral("%1: '%2' is not a number in (0, %3]").arg(option, value).arg(maximum);
+}
+
+const std::map<QString, Setter>& valueOptions()
+{
+    static const std::map<QString, Setter> options{
+        {"--steps", [](RenderOptions& o, const QString& v) {
+             qint64 n = 0;
+             QString error = wholeNumber("--steps", v, 0, n);
+             o.steps = n;
+             return error;
+         }},
+        {"--dt", [](RenderOptions& o, const QString& v) {
+             double dt = 0.0;
+             QString error = positiveNumber("--dt", v, 1e6, dt);
+             o.dt = dt;
+             return error;
+         }},
+        {"--backend", [](RenderOptions& o, const QString& v) {
+             o.backend = v;
+             return v == "reference" || v == "opencl"
+                        ? QString()
+                        : QStringLiteral("--backend: '%1' is not one of reference, opencl").arg(v);
+         }},
+        {"--device", [](RenderOptions& o, const QString& v) {
+             qint64 n = 0;
+             QString error = wholeNumber("--device", v, 0, n);
+             o.device = int(std::min<qint64>(n, 1 << 20));
+             return error;
+         }},
+        {"--out", [](RenderOptions& o, const QString& v) {
+             o.outputs << v;
+             return render::isExportSuffix(v)
+                        ? QString()
+                        : QStringLiteral("--out %1: the format must be .svg, .pdf, .eps or .png").arg(v);
+         }},
+        {"--dpi", [](RenderOptions& o, const QString& v) { return positiveNumber("--dpi", v, 4800.0, o.exportOptions.dpi); }},
+        {"--frames", [](RenderOptions& o, const QString& v) { o.framesDir = v; return QString(); }},
+        {"--every", [](RenderOptions& o, const QString& v) { return wholeNumber("--every", v, 1, o.every); }},
+        {"--stats", [](RenderOptions& o, const QString& v) { o.statsFile = v; return QString(); }},
+    };
+    return options;
+}
+
+// One argument (and the value after it, for a value option); returns what is wrong, if anything.
+QString takeArgument(RenderOptions& o, const QStringList& args, qsizetype& i)
+{
+    const QString& a = args[i];
+    if (a == QLatin1String("--polyline")) {
+        o.exportOptions.bezier = false;
+        return {};
     }
-    value = args[++i];
-    return true;
+    if (!a.startsWith(QLatin1String("--"))) {
+        if (!o.scene.isEmpty())
+            return QStringLiteral("only one scene file may be given (got %1 and %2)").arg(o.scene, a);
+        o.scene = a;
+        return {};
+    }
+    const auto option = valueOptions().find(a);
+    if (option == valueOptions().end())
+        return QStringLiteral("unknown option %1").arg(a);
+    if (i + 1 >= args.size())
+        return QStringLiteral("%1 needs a value").arg(a);
+    return option->second(o, args[++i]);
 }
 
 } // namespace
@@ -22,73 +97,15 @@ bool takeValue(const QStringList& args, qsizetype& i, QString& value, QString& e
 std::optional<RenderOptions> parseRenderOptions(const QStringList& args, QString& error)
 {
     RenderOptions o;
-    bool ok = true;
-    for (qsizetype i = 0; i < args.size() && ok; ++i) {
-        const QString& a = args[i];
-        QString value;
-        if (a == QLatin1String("--polyline")) {
-            o.exportOptions.bezier = false;
-        } else if (!a.startsWith(QLatin1String("--"))) {
-            if (!o.scene.isEmpty()) {
-                error = QStringLiteral("only one scene file may be given (got %1 and %2)").arg(o.scene, a);
-                return std::nullopt;
-            }
-            o.scene = a;
-        } else if (!(ok = takeValue(args, i, value, error))) {
-            break;
-        } else if (a == QLatin1String("--steps")) {
-            const qint64 n = value.toLongLong(&ok);
-            ok = ok && n >= 0;
-            o.steps = n;
-            if (!ok)
-                error = QStringLiteral("--steps: '%1' is not a non-negative whole number").arg(value);
-        } else if (a == QLatin1String("--dt")) {
-            const double dt = value.toDouble(&ok);
-            ok = ok && std::isfinite(dt) && dt > 0.0;
-            o.dt = dt;
-            if (!ok)
-                error = QStringLiteral("--dt: '%1' is not a positive number").arg(value);
-        } else if (a == QLatin1String("--backend")) {
-            ok = value == QLatin1String("reference") || value == QLatin1String("opencl");
-            o.backend = value;
-            if (!ok)
-                error = QStringLiteral("--backend: '%1' is not one of reference, opencl").arg(value);
-        } else if (a == QLatin1String("--out")) {
-            ok = render::isExportSuffix(value);
-            o.outputs << value;
-            if (!ok)
-                error = QStringLiteral("--out %1: the format must be .svg, .pdf, .eps or .png").arg(value);
-        } else if (a == QLatin1String("--dpi")) {
-            const double dpi = value.toDouble(&ok);
-            ok = ok && std::isfinite(dpi) && dpi > 0.0 && dpi <= 4800.0;
-            o.exportOptions.dpi = dpi;
-            if (!ok)
-                error = QStringLiteral("--dpi: '%1' is not a resolution between 0 and 4800").arg(value);
-        } else if (a == QLatin1String("--frames")) {
-            o.framesDir = value;
-        } else if (a == QLatin1String("--every")) {
-            o.every = value.toLongLong(&ok);
-            ok = ok && o.every > 0;
-            if (!ok)
-                error = QStringLiteral("--every: '%1' is not a positive whole number").arg(value);
-        } else if (a == QLatin1String("--stats")) {
-            o.statsFile = value;
-        } else {
-            error = QStringLiteral("unknown option %1").arg(a);
-            ok = false;
-        }
-    }
-    if (ok && o.scene.isEmpty()) {
+    for (qsizetype i = 0; i < args.size() && error.isEmpty(); ++i)
+        error = takeArgument(o, args, i);
+    if (error.isEmpty() && o.scene.isEmpty())
         error = QStringLiteral("no scene file given");
-        ok = false;
-    }
-    if (ok && !o.framesDir.isEmpty() && o.every == 0)
-        o.every = 1;
-    if (ok && o.framesDir.isEmpty() && o.every > 0) {
+    if (error.isEmpty() && o.framesDir.isEmpty() && o.every > 0)
         error = QStringLiteral("--every needs --frames DIR");
-        ok = false;
-    }
-    return ok ? std::optional(o) : std::nullopt;
+    if (!o.framesDir.isEmpty() && o.every == 0)
+        o.every = 1;
+    return error.isEmpty() ? std::optional(o) : std::nullopt;
 }
 
 } // namespace vf::app

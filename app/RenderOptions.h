@@ -13,7 +13,8 @@ struct RenderOptions {
     QString scene;
     std::optional<qint64> steps;
     std::optional<double> dt;
-    QString backend = QStringLiteral("reference");
+    QString backend;                // "reference", "opencl", or empty: OpenCL when a device exists
+    std::optional<int> device;      // --device N, an index into `vectorfluid devices`
     QStringList outputs;
     render::ExportOptions exportOptions;
     QString framesDir;

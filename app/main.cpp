@@ -7,8 +7,9 @@
 namespace {
 
 const char* usage =
-    "usage: vectorfluid render SCENE [--steps N] [--dt S] [--backend reference|opencl] [--out FILE]...\n"
-    "                          [--polyline] [--dpi N] [--frames DIR --every K] [--stats FILE.json]\n"
+    "usage: vectorfluid render SCENE [--steps N] [--dt S] [--backend reference|opencl] [--device N]\n"
+    "                          [--out FILE]... [--polyline] [--dpi N] [--frames DIR --every K]\n"
+    "                          [--stats FILE.json]\n"
     "       vectorfluid devices\n";
 
 } // namespace
@@ -23,6 +24,12 @@ int main(int argc, char** argv)
         return vf::app::renderCommand(arguments);
     if (command == QLatin1String("devices"))
         return vf::app::devicesCommand(arguments);
-    QTextStream(command == QLatin1String("--help") ? stdout : stderr) << usage;
-    return command == QLatin1String("--help") ? vf::app::Done : vf::app::BadInput;
+    if (command == QLatin1String("--help") || command == QLatin1String("-h")) {
+        QTextStream(stdout) << usage;
+        return vf::app::Done;
+    }
+    QTextStream(stderr) << (command.isEmpty() ? QStringLiteral("vectorfluid: no command given (see vectorfluid --help)")
+                                              : QStringLiteral("vectorfluid: unknown command '%1' (see vectorfluid --help)").arg(command))
+                        << '\n';
+    return vf::app::BadInput;
 }

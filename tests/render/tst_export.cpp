@@ -1,6 +1,7 @@
 // Export formats end to end: what the files contain, read back by our own parser and by the real
 // readers (xmllint, rsvg-convert, qpdf, pdftoppm, Ghostscript), and atomic replacement on failure.
 // Runs with a QCoreApplication only (QTEST_GUILESS_MAIN): PNG export must not need a GUI.
+#include "SvgReadBack.h"
 #include "TestGeometry.h"
 
 #include "render/Exporter.h"
@@ -11,21 +12,20 @@
 #include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
-#include <QXmlStreamReader>
 #include <QtTest>
-
-#include <charconv>
 
 using namespace vf;
 using sim::Polygon;
 using sim::Vec2;
+using test::ParsedLayer;
+using test::ParsedPath;
+using test::ParsedSvg;
+using test::parseSvg;
+using test::verticesOf;
 
 Q_DECLARE_METATYPE(model::Drawing)
 
 namespace {
-
-const QString kSvgNamespace = QStringLiteral("http://www.w3.org/2000/svg");
-const QString kInkscapeNamespace = QStringLiteral("http://www.inkscape.org/namespaces/inkscape");
 
 // ---- the drawing every format is checked with ------------------------------------------------
 
@@ -82,124 +82,6 @@ QString checkProbes(const QImage& image, const std::vector<Probe>& expected, con
                      probe.expected.name(), QString::number(probe.expected.alpha()));
     }
     return {};
-}
-
-// ---- reading our SVG back without QtSvg ----------------------------------------------------
-
-struct ParsedPath {
-    QString id, label, fill, fillOpacity, fillRule;
-    std::vector<render::FittedContour> contours;
-};
-
-struct ParsedLayer {
-    QString id, label, groupMode, style;
-    std::vector<ParsedPath> paths;
-};
-
-struct ParsedSvg {
-    QString width, height, viewBox, backgroundFill;
-    QStringList ids;
-    std::vector<ParsedLayer> layers;
-    QString error;
-};
-
-// Absolute M/L/C/Z only, as our writer produces; anything else is an error.
-bool parsePathData(const std::string& d, std::vector<render::FittedContour>& contours)
-{
-    std::size_t i = 0;
-    char command = 0;
-    const auto skipSeparators = [&] {
-        while (i < d.size() && (d[i] == ' ' || d[i] == ',' || d[i] == '\n' || d[i] == '\t'))
-            ++i;
-    };
-    const auto number = [&](double& value) {
-        skipSeparators();
-        const auto [end, ec] = std::from_chars(d.data() + i, d.data() + d.size(), value);
-        i = std::size_t(end - d.data());
-        return ec == std::errc();
-    };
-    const auto point = [&](Vec2& p) { return number(p.x) && number(p.y); };
-    for (skipSeparators(); i < d.size(); skipSeparators()) {
-        if (std::isalpha(static_cast<unsigned char>(d[i])))
-            command = d[i++];
-        else if (command == 0 || command == 'Z')
-            return false;
-        render::PathSegment segment;
-        switch (command) {
-        case 'M':
-            contours.push_back({});
-            if (!point(contours.back().start))
-                return false;
-            command = 'L'; // further pairs are implicit line-tos
-            break;
-        case 'L':
-            segment.isLine = true;
-            if (contours.empty() || !point(segment.end))
-                return false;
-            contours.back().segments.push_back(segment);
-            break;
-        case 'C':
-            if (contours.empty() || !point(segment.control1) || !point(segment.control2) || !point(segment.end))
-                return false;
-            contours.back().segments.push_back(segment);
-            break;
-        case 'Z':
-            break;
-        default:
-            return false;
-        }
-    }
-    return true;
-}
-
-ParsedSvg parseSvg(const QString& fileName)
-{
-    ParsedSvg svg;
-    QFile file(fileName);
-    if (!file.open(QIODevice::ReadOnly)) {
-        svg.error = file.errorString();
-        return svg;
-    }
-    QXmlStreamReader xml(&file);
-    while (!xml.atEnd()) {
-        if (xml.readNext() != QXmlStreamReader::StartElement || xml.namespaceUri() != kSvgNamespace)
-            continue;
-        const QXmlStreamAttributes a = xml.attributes();
-        if (a.hasAttribute(QStringLiteral("id")))
-            svg.ids << a.value(QStringLiteral("id")).toString();
-        const auto inkscape = [&](const char* name) {
-            return a.value(kInkscapeNamespace, QLatin1String(name)).toString();
-        };
-        const auto plain = [&](const char* name) { return a.value(QLatin1String(name)).toString(); };
-        if (xml.name() == u"svg") {
-            svg.width = plain("width");
-            svg.height = plain("height");
-            svg.viewBox = plain("viewBox");
-        } else if (xml.name() == u"g") {
-            svg.layers.push_back({plain("id"), inkscape("label"), inkscape("groupmode"), plain("style"), {}});
-        } else if (xml.name() == u"rect") {
-            svg.backgroundFill = plain("fill");
-        } else if (xml.name() == u"path") {
-            ParsedPath path{plain("id"), inkscape("label"), plain("fill"), plain("fill-opacity"),
-                            plain("fill-rule"), {}};
-            if (svg.layers.empty() || !parsePathData(plain("d").toStdString(), path.contours)) {
-                svg.error = QStringLiteral("bad path %1").arg(path.id);
-                return svg;
-            }
-            svg.layers.back().paths.push_back(std::move(path));
-        }
-    }
-    if (xml.hasError())
-        svg.error = xml.errorString();
-    return svg;
-}
-
-Polygon verticesOf(const render::FittedContour& contour)
-{
-    Polygon vertices{contour.start};
-    for (const render::PathSegment& s : contour.segments)
-        vertices.push_back(s.end);
-    return vertices;
 }
 
 // ---- external readers --------------------------------------------------------------------
