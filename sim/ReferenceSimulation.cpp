@@ -5,7 +5,6 @@
 
 #include <glm/geometric.hpp>
 
-#include <algorithm>
 #include <cmath>
 
 namespace vf::sim {
@@ -65,16 +64,13 @@ void ReferenceSimulation::stylus(Vec2 from, Vec2 to, double radius, double durat
 StepReport ReferenceSimulation::step(double dt)
 {
     StepReport report;
-    const double strain = m_tracker.strainInSpacings(*m_flow, time(), dt);
-    report.substeps = std::clamp(int(std::ceil(strain / m_settings.tracking.substepStrain)), 1,
-                                 m_settings.tracking.maxSubsteps);
+    report.substeps = substepCount(m_tracker.strainInSpacings(*m_flow, time(), dt), m_settings.tracking);
     const double h = dt / report.substeps;
     for (int k = 0; k < report.substeps; ++k) {
         // Each substep gets its share of the pen's path, so the force follows the pen.
         for (const StylusSegment& s : m_pendingStylus) {
-            const double a = double(k) / report.substeps, b = double(k + 1) / report.substeps;
-            m_fluid->solver().addStylus(s.from + a * (s.to - s.from), s.from + b * (s.to - s.from), s.radius,
-                                        s.duration / report.substeps);
+            const StylusSegment p = s.part(k, report.substeps);
+            m_fluid->solver().addStylus(p.from, p.to, p.radius, p.duration);
         }
         const double t = time();
         m_flow->advance(h);

@@ -2,6 +2,7 @@
 // The reference backend: scalar double-precision C++, deterministic, single-threaded.
 #include "sim/ContourTracker.h"
 #include "sim/Simulation.h"
+#include "sim/Stylus.h"
 
 #include <memory>
 
@@ -26,11 +27,6 @@ public:
     std::vector<Contour> contours() const override { return m_tracker.contours(); }
 
 private:
-    struct StylusSegment {
-        Vec2 from, to;
-        double radius, duration;
-    };
-
     SimulationSettings m_settings;
     std::unique_ptr<Flow> m_flow;
     FluidFlow* m_fluid = nullptr;  // m_flow when the flow is a fluid

@@ -2,6 +2,7 @@
 
 #include "sim/ReferenceSimulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -26,6 +27,13 @@ void validateSettings(const SimulationSettings& s)
     require(t.maxSubsteps >= 1, "tracking max_substeps must be at least 1");
     require(std::isfinite(s.fluid.width) && s.fluid.width > 0.0 && std::isfinite(s.fluid.height) && s.fluid.height > 0.0,
             "canvas width and height must be positive numbers");
+}
+
+int substepCount(double strain, const TrackingSettings& tracking)
+{
+    if (!(strain >= 0.0))  // NaN: let the step run once and the finiteness checks speak
+        return 1;
+    return int(std::clamp(std::ceil(strain / tracking.substepStrain), 1.0, double(tracking.maxSubsteps)));
 }
 
 std::vector<std::vector<Polygon>> Simulation::regions() const

@@ -59,6 +59,11 @@ public:
 // Throws std::invalid_argument with a one-line message for settings no backend can run.
 void validateSettings(const SimulationSettings& settings);
 
+// How many substeps a step of the given strain (the largest relative motion of an edge's ends in
+// local spacings, ContourTracker::strainInSpacings) takes: enough to keep each under
+// tracking.substepStrain, at most tracking.maxSubsteps.
+int substepCount(double strain, const TrackingSettings& tracking);
+
 // Throws std::invalid_argument with a one-line message for invalid settings.
 std::unique_ptr<Simulation> makeReferenceSimulation(const SimulationSettings& settings);
 
