@@ -1,0 +1,409 @@
+// vf_bench: the speed bar of DESIGN.md §4. Vertex-steps per second of the full step (fluid solve,
+// RK4 advection, adaptive spacing with the proximity term, refinement) at 100k and 1M vertices for
+// every backend, beside a naive scalar RK4 loop over the same number of points in the same flow,
+// in one run of one binary. docs/BENCHMARKS.md has the figures, the machine and the commands.
+//
+// Families (run in this order, so the full step can report its ratio to the naive loop):
+//   NaiveRk4/N                 plain std::vector<dvec2>, classic RK4 through FluidFlow::velocity
+//   FullStep/<backend>/N       Simulation::step through the backend interface
+//   Breakdown/reference/N      the reference step taken apart phase by phase (ms per step)
+//
+// The scene: the default 64×64 fluid, stirred by a pen that circles the canvas centre at a steady
+// speed, first alone (so the flow is already moving) and then with a lattice of small ink circles
+// whose total vertex count is about N. Adaptive spacing and proximity are on (the defaults).
+#include "sim/ContourTracker.h"
+#include "sim/FluidFlow.h"
+#include "sim/ProximityGrid.h"
+#include "sim/Simulation.h"
+#include "sim/SpacingField.h"
+
+#include <benchmark/benchmark.h>
+#include <malloc.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <ctime>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace vf::sim;
+using Clock = std::chrono::steady_clock;
+
+// CPU time of this thread: what a phase costs, whatever else the (shared) machine runs meanwhile.
+double threadSeconds()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// ---- Backends: each one becomes a FullStep family. The OpenCL backend adds its factory here. ----
+
+struct Backend {
+    const char* name;
+    std::unique_ptr<Simulation> (*make)(const SimulationSettings&);
+};
+
+const std::vector<Backend>& backends()
+{
+    static const std::vector<Backend> list{{"reference", &makeReferenceSimulation}};
+    return list;
+}
+
+// ---- The scene -----------------------------------------------------------------------------------
+
+constexpr double kDt = 1.0 / 60.0;  // one display frame per step, as an interactive session steps
+constexpr int kStirSteps = 30;      // fluid-only steps before the ink goes in (0.5 s of stirring)
+constexpr int kWarmupSteps = 3;     // with ink, untimed: refinement settles the fresh circles
+constexpr double kPenOrbit = 0.3;   // the pen circles (0.5, 0.5) at this distance...
+constexpr double kPenSpeed = 0.3;   // ...at this speed (canvas units / s)...
+constexpr double kPenRadius = 0.05; // ...with this reach
+// Circles of about this many vertices once refinement has settled them (measured, see
+// layoutFor): small enough to tile the canvas with N vertices, large enough that per-contour
+// overhead does not swamp per-vertex work.
+constexpr double kVerticesPerCircle = 128.0;
+// d_max relative to the circle radius. The adaptive spacing then settles each circle at about
+// kVerticesPerCircle vertices in this flow (curvature, vorticity and proximity all shrink d_i).
+constexpr double kSpacingOverRadius = 0.1;
+
+struct Layout {
+    int grid = 0;        // grid × grid circles
+    double radius = 0;   // of each circle
+    double maxSpacing = 0;
+};
+
+Layout layoutFor(std::int64_t targetVertices)
+{
+    Layout l;
+    l.grid = std::max(1, int(std::lround(std::sqrt(double(targetVertices) / kVerticesPerCircle))));
+    l.radius = 0.3 / l.grid;  // gaps of 0.4 / grid between neighbours: no proximity at the start
+    l.maxSpacing = kSpacingOverRadius * l.radius;
+    return l;
+}
+
+SimulationSettings settingsFor(const Layout& layout)
+{
+    SimulationSettings s;  // fluid flow, 64 × 64 cells, unit canvas, adaptive + proximity on
+    s.tracking.maxSpacing = layout.maxSpacing;
+    return s;
+}
+
+Vec2 penAt(int step)
+{
+    const double angle = step * kPenSpeed * kDt / kPenOrbit;
+    return Vec2(0.5) + kPenOrbit * Vec2(std::cos(angle), std::sin(angle));
+}
+
+std::vector<Vec2> circleCentres(const Layout& layout)
+{
+    std::vector<Vec2> centres;
+    for (int j = 0; j < layout.grid; ++j)
+        for (int i = 0; i < layout.grid; ++i)
+            centres.emplace_back((i + 0.5) / layout.grid, (j + 0.5) / layout.grid);
+    return centres;
+}
+
+// ---- Memory: peak resident set growth, from /proc/self (Linux) --------------------------------
+
+long procStatusKiB(const char* key)
+{
+    std::ifstream in("/proc/self/status");
+    std::string line;
+    const std::string prefix = std::string(key) + ":";
+    while (std::getline(in, line))
+        if (line.rfind(prefix, 0) == 0)
+            return std::stol(line.substr(prefix.size()));
+    return -1;
+}
+
+// Returns freed heap to the system and restarts the peak (VmHWM) at the current resident size, so
+// the peak read later is this benchmark's own. Returns that resident size in bytes.
+double resetPeakResident()
+{
+    malloc_trim(0);
+    std::ofstream("/proc/self/clear_refs") << "5";
+    return 1024.0 * double(procStatusKiB("VmRSS"));
+}
+
+double peakResident() { return 1024.0 * double(procStatusKiB("VmHWM")); }
+
+// Bytes the program holds from malloc right now (small chunks plus mmapped blocks): the live
+// footprint, free of what the allocator keeps resident for reuse.
+double heapInUse()
+{
+    const struct mallinfo2 info = mallinfo2();
+    return double(info.uordblks) + double(info.hblkhd);
+}
+
+// ---- NaiveRk4 -----------------------------------------------------------------------------------
+
+// Wall-clock vertex-steps / s of every NaiveRk4 run (repetitions included) by target size, for the
+// FullStep's ratio; the median is used.
+std::map<std::int64_t, std::vector<double>> g_naiveRates;
+
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+Vec2 naiveRk4(const FluidFlow& flow, Vec2 p, double t, double dt)
+{
+    const Vec2 k1 = flow.velocity(p, t);
+    const Vec2 k2 = flow.velocity(p + 0.5 * dt * k1, t + 0.5 * dt);
+    const Vec2 k3 = flow.velocity(p + 0.5 * dt * k2, t + 0.5 * dt);
+    const Vec2 k4 = flow.velocity(p + dt * k3, t + dt);
+    return p + (dt / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+// Exactly N points on the same circles, advanced by classic RK4 through the same stirred flow
+// (FluidFlow::velocity: bilinear MAC sampling, blended in time within the step, as the engine
+// samples it). No refinement, no spacing, no proximity. The fluid solve is outside the timing.
+void naiveRk4Benchmark(benchmark::State& state, std::int64_t target)
+{
+    const Layout layout = layoutFor(target);
+    FluidFlow flow(settingsFor(layout).fluid);
+    int step = 0;
+    const auto stirAndAdvance = [&] {
+        flow.solver().addStylus(penAt(step), penAt(step + 1), kPenRadius, kDt);
+        flow.advance(kDt);
+        ++step;
+    };
+    while (step < kStirSteps + kWarmupSteps)
+        stirAndAdvance();
+
+    const std::vector<Vec2> centres = circleCentres(layout);
+    std::vector<Vec2> points;
+    points.reserve(std::size_t(target));
+    const std::int64_t circles = std::int64_t(centres.size());
+    for (std::int64_t c = 0; c < circles; ++c) {
+        const std::int64_t n = target / circles + (c < target % circles ? 1 : 0);
+        for (std::int64_t k = 0; k < n; ++k) {
+            const double angle = 2.0 * std::numbers::pi * double(k) / double(n);
+            points.push_back(centres[c] + layout.radius * Vec2(std::cos(angle), std::sin(angle)));
+        }
+    }
+
+    double seconds = 0.0, cpuSeconds = 0.0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        stirAndAdvance();
+        const double t = flow.time() - kDt;
+        state.ResumeTiming();
+        const auto start = Clock::now();
+        const double cpuStart = threadSeconds();
+        for (Vec2& p : points)
+            p = naiveRk4(flow, p, t, kDt);
+        benchmark::DoNotOptimize(points.data());
+        benchmark::ClobberMemory();
+        cpuSeconds += threadSeconds() - cpuStart;
+        seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    const double vertexSteps = double(target) * double(state.iterations());
+    g_naiveRates[target].push_back(vertexSteps / seconds);
+    state.counters["vertices"] = double(target);
+    state.counters["vertex_steps_per_s"] = benchmark::Counter(vertexSteps, benchmark::Counter::kIsRate);
+    state.counters["vertex_steps_per_cpu_s"] = vertexSteps / cpuSeconds;
+    state.counters["B_per_vertex"] = double(sizeof(Vec2));  // the points array, all there is
+}
+
+// ---- FullStep -----------------------------------------------------------------------------------
+
+void fullStepBenchmark(benchmark::State& state, const Backend& backend, std::int64_t target)
+{
+    const Layout layout = layoutFor(target);
+    std::unique_ptr<Simulation> sim = backend.make(settingsFor(layout));
+    int step = 0;
+    const auto stirAndStep = [&] {
+        sim->stylus(penAt(step), penAt(step + 1), kPenRadius, kDt);
+        ++step;
+        return sim->step(kDt);
+    };
+    while (step < kStirSteps)
+        stirAndStep();
+
+    const double baseline = resetPeakResident();  // the fluid is allocated; the ink is not
+    const double heapBaseline = heapInUse();
+    for (const Vec2& centre : circleCentres(layout))
+        sim->addRegion({circle(centre, layout.radius, layout.maxSpacing)});
+    for (int k = 0; k < kWarmupSteps; ++k)
+        stirAndStep();
+
+    double vertexSteps = 0.0, substeps = 0.0, seconds = 0.0, cpuSeconds = 0.0;
+    const double first = double(sim->vertexCount());
+    bool limited = false;
+    for (auto _ : state) {
+        const double n = double(sim->vertexCount());  // the vertices this step advances
+        const auto start = Clock::now();
+        const double cpuStart = threadSeconds();
+        const StepReport report = stirAndStep();
+        cpuSeconds += threadSeconds() - cpuStart;
+        seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        vertexSteps += n;
+        substeps += report.substeps;
+        limited = limited || report.vertexLimitReached;
+    }
+    const double steps = double(state.iterations());
+    const double mean = vertexSteps / steps;
+    state.counters["vertices"] = mean;
+    state.counters["growth"] = double(sim->vertexCount()) / first;  // last / first, over the timed steps
+    state.counters["substeps"] = substeps / steps;
+    state.counters["vertex_steps_per_s"] = benchmark::Counter(vertexSteps, benchmark::Counter::kIsRate);
+    state.counters["vertex_steps_per_cpu_s"] = vertexSteps / cpuSeconds;
+    state.counters["peak_rss_B_per_vertex"] = (peakResident() - baseline) / mean;
+    state.counters["live_heap_B_per_vertex"] = (heapInUse() - heapBaseline) / double(sim->vertexCount());
+    if (const auto naive = g_naiveRates.find(target); naive != g_naiveRates.end())
+        state.counters["full_over_naive"] = (vertexSteps / seconds) / median(naive->second);
+    if (limited)
+        state.SkipWithError("refinement hit max_vertices: the scene is not the one described");
+}
+
+// ---- Breakdown ----------------------------------------------------------------------------------
+
+// The reference step (ReferenceSimulation::step with one substep) taken apart, each phase in thread
+// CPU time. The real step runs first (strain, fluid, ContourTracker::advect); then RK4 alone, the
+// spacing (eqs. 3-7) alone, and the proximity grid's build and queries alone are repeated on a
+// copy of the state that step started from. Refinement (split, collapse, ring bookkeeping) is
+// what advect takes beyond RK4 and spacing. Every phase is reported as its best (minimum) over the
+// timed steps, which filters out other processes on a shared machine; the benchmark's own time
+// (manual) is the mean real step.
+void breakdownBenchmark(benchmark::State& state, std::int64_t target)
+{
+    const Layout layout = layoutFor(target);
+    const SimulationSettings settings = settingsFor(layout);
+    FluidFlow flow(settings.fluid);
+    ContourTracker tracker(settings.tracking);
+    ProximityGrid grid;
+    int step = 0;
+    const auto stir = [&] {
+        flow.solver().addStylus(penAt(step), penAt(step + 1), kPenRadius, kDt);
+        ++step;
+    };
+    for (int k = 0; k < kStirSteps; ++k) {
+        stir();
+        flow.advance(kDt);
+    }
+    int region = 0;
+    for (const Vec2& centre : circleCentres(layout))
+        tracker.addContour(region++, circle(centre, layout.radius, layout.maxSpacing));
+    for (int k = 0; k < kWarmupSteps; ++k) {
+        stir();
+        const double t = flow.time();
+        flow.advance(kDt);
+        tracker.advect(flow, t, kDt);
+    }
+
+    enum Phase { Strain, Fluid, Advect, Rk4, Spacing, GridBuild, Proximity, PhaseCount };
+    std::array<double, PhaseCount> best;
+    best.fill(INFINITY);
+    double vertices = 0.0, substepsWanted = 0.0;
+    const auto timed = [&best](Phase phase, auto&& work) {
+        const double start = threadSeconds();
+        work();
+        const double seconds = threadSeconds() - start;
+        best[phase] = std::min(best[phase], seconds);
+        return seconds;
+    };
+    for (auto _ : state) {
+        vertices += double(tracker.vertexCount());
+        const double t = flow.time();
+        std::vector<Contour> copy = tracker.contours();
+
+        double strain = 0.0;
+        double stepSeconds = timed(Strain, [&] { strain = tracker.strainInSpacings(flow, t, kDt); });
+        substepsWanted += std::max(1.0, std::ceil(strain / settings.tracking.substepStrain));
+        stir();
+        stepSeconds += timed(Fluid, [&] { flow.advance(kDt); });
+        stepSeconds += timed(Advect, [&] { tracker.advect(flow, t, kDt); });
+        state.SetIterationTime(stepSeconds);
+
+        timed(Rk4, [&] {
+            for (Contour& c : copy) {
+                c.previous = c.positions;
+                for (std::size_t i = 0; i < c.positions.size(); ++i)
+                    c.positions[i] = rungeKutta4(flow, c.previous[i], t, kDt);
+            }
+        });
+        timed(Spacing, [&] { computeSpacing(copy, flow, t + kDt, settings.tracking, grid); });
+        timed(GridBuild, [&] { grid.build(copy, settings.tracking.proximityRadius()); });
+        timed(Proximity, [&] {
+            double nearest = 0.0;
+            for (std::size_t ci = 0; ci < copy.size(); ++ci)
+                for (std::size_t i = 0; i < copy[ci].positions.size(); ++i)
+                    nearest += std::min(1.0, grid.nearestOtherPart(ci, i));
+            benchmark::DoNotOptimize(nearest);
+        });
+    }
+    double contourBytes = 0.0;
+    for (const Contour& c : tracker.contours())
+        contourBytes += double(sizeof(Contour)) + double(c.positions.capacity() * sizeof(Vec2))
+                      + double(c.previous.capacity() * sizeof(Vec2)) + double(c.spacing.capacity() * sizeof(double));
+    const double steps = double(state.iterations());
+    const auto ms = [](double seconds) { return 1e3 * seconds; };
+    state.counters["vertices"] = vertices / steps;
+    state.counters["substeps_wanted"] = substepsWanted / steps;
+    state.counters["vertex_steps_per_s"] = benchmark::Counter(vertices, benchmark::Counter::kIsRate);
+    state.counters["ms_strain"] = ms(best[Strain]);
+    state.counters["ms_fluid"] = ms(best[Fluid]);
+    state.counters["ms_advect"] = ms(best[Advect]);  // RK4 + spacing + refinement, the real one
+    state.counters["ms_rk4"] = ms(best[Rk4]);
+    state.counters["ms_spacing"] = ms(best[Spacing]);
+    state.counters["ms_grid_build"] = ms(best[GridBuild]);
+    state.counters["ms_proximity"] = ms(best[Proximity]);
+    state.counters["ms_spacing_rest"] = ms(best[Spacing] - best[GridBuild] - best[Proximity]);  // κ, ω, exp, eq. 6
+    state.counters["ms_refine"] = ms(best[Advect] - best[Rk4] - best[Spacing]);
+    state.counters["contour_B_per_vertex"] = contourBytes / double(tracker.vertexCount());
+}
+
+// ---- Registration -------------------------------------------------------------------------------
+
+struct Size {
+    std::int64_t vertices;
+    int naiveIterations, fullIterations, breakdownIterations;
+};
+constexpr Size kSizes[] = {{100'000, 200, 30, 10}, {1'000'000, 40, 10, 6}};
+
+void registerAll()
+{
+    for (const Size& s : kSizes)
+        benchmark::RegisterBenchmark(("NaiveRk4/" + std::to_string(s.vertices)).c_str(), naiveRk4Benchmark, s.vertices)
+            ->Unit(benchmark::kMillisecond)
+            ->Iterations(s.naiveIterations)
+            ->UseRealTime();
+    for (const Backend& b : backends())
+        for (const Size& s : kSizes)
+            benchmark::RegisterBenchmark(("FullStep/" + std::string(b.name) + "/" + std::to_string(s.vertices)).c_str(),
+                                         fullStepBenchmark, b, s.vertices)
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(s.fullIterations)
+                ->UseRealTime();
+    for (const Size& s : kSizes)
+        benchmark::RegisterBenchmark(("Breakdown/reference/" + std::to_string(s.vertices)).c_str(), breakdownBenchmark,
+                                     s.vertices)
+            ->Unit(benchmark::kMillisecond)
+            ->Iterations(s.breakdownIterations)
+            ->UseManualTime();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    registerAll();
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
