@@ -7,13 +7,31 @@ namespace vf::sim {
 FluidFlow::FluidFlow(const FluidSettings& settings)
     : m_solver(settings)
     , m_previous(m_solver.velocity())
+    , m_middle(m_previous)
 {
 }
+
+namespace {
+
+// The field halfway between two fields. Sampling is linear in the field, so sampling this equals
+// blending two samples at s = ½ (to rounding) at half the cost.
+MacVelocity average(const MacVelocity& a, const MacVelocity& b)
+{
+    MacVelocity mean = a;
+    for (std::size_t i = 0; i < mean.u.size(); ++i)
+        mean.u[i] = 0.5 * (a.u[i] + b.u[i]);
+    for (std::size_t i = 0; i < mean.v.size(); ++i)
+        mean.v[i] = 0.5 * (a.v[i] + b.v[i]);
+    return mean;
+}
+
+} // namespace
 
 void FluidFlow::advance(double dt)
 {
     m_previous = m_solver.velocity();
     m_solver.step(dt);
+    m_middle = average(m_previous, m_solver.velocity());
     m_stepStart = m_time;
     m_time += dt;
 }
@@ -26,27 +44,31 @@ double FluidFlow::blend(double t) const
 
 namespace {
 
-// The field `s` of the way from `before` to `now`; `sample` reads one value out of a field.
-template <typename Sample>
-auto interpolate(double s, const MacVelocity& before, const MacVelocity& now, Sample sample)
-{
-    const auto end = sample(now);
-    if (s == 1.0)
-        return end;
-    const auto start = sample(before);
-    return start + s * (end - start);
-}
-
 } // namespace
+
+// The flow `s` of the way through the step; `sample` reads one value out of a field. RK4 asks at
+// s = 0, ½, ½, 1, each answered by one field.
+template <typename Sample>
+auto FluidFlow::interpolate(double s, Sample sample) const
+{
+    if (s == 1.0)
+        return sample(m_solver.velocity());
+    if (s == 0.5)
+        return sample(m_middle);
+    const auto start = sample(m_previous);
+    if (s == 0.0)
+        return start;
+    return start + s * (sample(m_solver.velocity()) - start);
+}
 
 Vec2 FluidFlow::velocity(Vec2 p, double t) const
 {
-    return interpolate(blend(t), m_previous, m_solver.velocity(), [p](const MacVelocity& f) { return f.sample(p); });
+    return interpolate(blend(t), [p](const MacVelocity& f) { return f.sample(p); });
 }
 
 double FluidFlow::vorticity(Vec2 p, double t) const
 {
-    return interpolate(blend(t), m_previous, m_solver.velocity(), [p](const MacVelocity& f) { return f.vorticity(p); });
+    return interpolate(blend(t), [p](const MacVelocity& f) { return f.vorticity(p); });
 }
 
 } // namespace vf::sim

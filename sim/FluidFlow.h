@@ -20,9 +20,12 @@ public:
 
 private:
     double blend(double t) const;  // 0 at the step's start, 1 at its end
+    template <typename Sample>
+    auto interpolate(double s, Sample sample) const;
 
     FluidSolver m_solver;
-    MacVelocity m_previous;
+    MacVelocity m_previous;  // the field at the step's start
+    MacVelocity m_middle;    // halfway through the step
     double m_stepStart = 0.0;
     double m_time = 0.0;
 };

@@ -39,17 +39,17 @@ void ProximityGrid::build(const std::vector<Contour>& contours, double radius)
     m_rows = int(extent.y / m_radius) + 1;
 
     // Counting sort: count per cell, exclusive prefix sum, scatter.
-    std::vector<std::uint32_t> cellOfVertex(total);
+    m_cellOfVertex.resize(total);
     m_cellStart.assign(std::size_t(m_columns) * m_rows + 1, 0);
     std::size_t k = 0;
     int column = 0, row = 0;
     for (const Contour& c : contours)
         for (const Vec2& p : c.positions)
-            ++m_cellStart[(cellOfVertex[k++] = cellOf(p, column, row)) + 1];
+            ++m_cellStart[(m_cellOfVertex[k++] = cellOf(p, column, row)) + 1];
     for (std::size_t cell = 1; cell < m_cellStart.size(); ++cell)
         m_cellStart[cell] += m_cellStart[cell - 1];
 
-    std::vector<std::uint32_t> fill(m_cellStart.begin(), m_cellStart.end() - 1);
+    m_fill.assign(m_cellStart.begin(), m_cellStart.end() - 1);
     m_entries.resize(total);
     m_slot.resize(contours.size());
     m_contourLength.resize(contours.size());
@@ -59,7 +59,7 @@ void ProximityGrid::build(const std::vector<Contour>& contours, double radius)
         m_slot[ci].resize(positions.size());
         double arc = 0.0;
         for (std::size_t i = 0; i < positions.size(); ++i) {
-            const std::uint32_t slot = fill[cellOfVertex[k++]]++;
+            const std::uint32_t slot = m_fill[m_cellOfVertex[k++]]++;
             m_entries[slot] = {positions[i], arc, ci};
             m_slot[ci][i] = slot;
             arc += glm::distance(positions[i], positions[(i + 1) % positions.size()]);
@@ -76,24 +76,24 @@ double ProximityGrid::nearestOtherPart(std::size_t contour, std::size_t index) c
     bool found = false;
     int column = 0, row = 0;
     cellOf(self.position, column, row);
+    const int firstColumn = std::max(0, column - 1), lastColumn = std::min(m_columns - 1, column + 1);
     for (int r = std::max(0, row - 1); r <= std::min(m_rows - 1, row + 1); ++r) {
-        for (int c = std::max(0, column - 1); c <= std::min(m_columns - 1, column + 1); ++c) {
-            const std::size_t cell = std::size_t(r) * m_columns + c;
-            for (std::uint32_t e = m_cellStart[cell]; e < m_cellStart[cell + 1]; ++e) {
-                const Entry& other = m_entries[e];
-                const Vec2 d = other.position - self.position;
-                const double dist2 = glm::dot(d, d);
-                if (dist2 >= best2)
-                    continue;
-                if (other.contour == self.contour) {
-                    const double along = std::abs(other.arc - self.arc);
-                    const double arc = std::min(along, length - along);
-                    if (arc * arc <= 4.0 * dist2)
-                        continue;  // its own neighbourhood along the contour
-                }
-                best2 = dist2;
-                found = true;
+        // The three cells of a row are neighbours in the sorted entries: one span.
+        const std::size_t rowStart = std::size_t(r) * m_columns;
+        for (std::uint32_t e = m_cellStart[rowStart + firstColumn]; e < m_cellStart[rowStart + lastColumn + 1]; ++e) {
+            const Entry& other = m_entries[e];
+            const Vec2 d = other.position - self.position;
+            const double dist2 = glm::dot(d, d);
+            if (dist2 >= best2)
+                continue;
+            if (other.contour == self.contour) {
+                const double along = std::abs(other.arc - self.arc);
+                const double arc = std::min(along, length - along);
+                if (arc * arc <= 4.0 * dist2)
+                    continue;  // its own neighbourhood along the contour
             }
+            best2 = dist2;
+            found = true;
         }
     }
     return found ? std::sqrt(best2) : std::numeric_limits<double>::infinity();

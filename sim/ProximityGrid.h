@@ -35,6 +35,7 @@ private:
     std::vector<Entry> m_entries;                   // sorted by cell
     std::vector<std::vector<std::uint32_t>> m_slot; // [contour][vertex] -> index into m_entries
     std::vector<double> m_contourLength;
+    std::vector<std::uint32_t> m_cellOfVertex, m_fill;  // build scratch, kept to avoid reallocation
 };
 
 } // namespace vf::sim

@@ -30,19 +30,24 @@ std::vector<double> gaussianWeights(int radius)
     return w;
 }
 
-// Eq. 6, cyclic along the closed contour.
-void smoothAlongContour(std::vector<double>& d, const std::vector<double>& weights, std::vector<double>& scratch)
+// Eq. 6, cyclic along the closed contour. The contour is copied with `radius` values wrapped on
+// each side, so the window itself needs no index arithmetic.
+void smoothAlongContour(std::vector<double>& d, const std::vector<double>& weights, std::vector<double>& padded)
 {
     const int n = int(d.size());
     const int radius = int(weights.size() / 2);
-    scratch.resize(n);
+    padded.resize(n + 2 * radius);
+    for (int k = 0; k < radius; ++k) {
+        padded[k] = d[((k - radius) % n + n) % n];
+        padded[n + radius + k] = d[k % n];
+    }
+    std::copy(d.begin(), d.end(), padded.begin() + radius);
     for (int i = 0; i < n; ++i) {
         double s = 0.0;
-        for (int k = -radius; k <= radius; ++k)
-            s += weights[k + radius] * d[((i + k) % n + n) % n];
-        scratch[i] = s;
+        for (int k = 0; k <= 2 * radius; ++k)
+            s += weights[k] * padded[i + k];
+        d[i] = s;
     }
-    d.swap(scratch);
 }
 
 } // namespace
