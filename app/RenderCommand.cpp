@@ -4,6 +4,7 @@
 #include "model/AtomicFile.h"
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
+#include "sim/opencl/OpenClSimulation.h"
 #include "render/Exporter.h"
 
 #include <QDir>
@@ -25,6 +26,7 @@ struct RunTotals {
     qint64 vertexSteps = 0;  // sum over steps of the vertex count after the step
     double simSeconds = 0.0; // wall time inside simulation steps only
     bool limitHit = false;
+    QString limit;           // which limit, when limitHit
 };
 
 void fail(const QString& line)
@@ -32,7 +34,29 @@ void fail(const QString& line)
     QTextStream(stderr) << "vectorfluid: " << line << '\n';
 }
 
-QString writeStats(const QString& path, const model::Drawing& drawing, const RunTotals& totals, std::size_t vertices)
+// The backend the options ask for. OpenCL is the default wherever a device can run the scene;
+// where none can, one line says why (a failed kernel build adds its log below it) and the
+// reference backend runs instead.
+model::SimulationFactory backendFactory(const RenderOptions& options)
+{
+    return [&options](const sim::SimulationSettings& settings) -> std::unique_ptr<sim::Simulation> {
+        if (options.backend != QLatin1String("reference")) {
+            try {
+                return std::make_unique<sim::opencl::OpenClSimulation>(settings, options.device);
+            } catch (const sim::opencl::DeviceError& e) {
+                const QString what = QString::fromUtf8(e.what());
+                QTextStream(stderr) << "vectorfluid: OpenCL backend unavailable (" << what.section('\n', 0, 0)
+                                    << "); using the reference backend\n";
+                if (what.contains('\n'))
+                    QTextStream(stderr) << what.section('\n', 1) << '\n';
+            }
+        }
+        return sim::makeReferenceSimulation(settings);
+    };
+}
+
+QString writeStats(const QString& path, const model::Drawing& drawing, const RunTotals& totals,
+                   const sim::Simulation& simulation)
 {
     QJsonArray regions;
     for (const model::DrawnRegion& r : drawing.regions) {
@@ -46,9 +70,10 @@ QString writeStats(const QString& path, const model::Drawing& drawing, const Run
         regions.append(QJsonObject{{"name", r.name}, {"vertices", count}, {"area", area}, {"perimeter", length}});
     }
     const QJsonObject root{
+        {"backend", QString::fromStdString(simulation.backendName())},
         {"regions", regions},
         {"totals", QJsonObject{{"steps", totals.steps},
-                               {"vertices", qint64(vertices)},
+                               {"vertices", qint64(simulation.vertexCount())},
                                {"vertex_steps", totals.vertexSteps},
                                {"sim_seconds", totals.simSeconds}}},
         {"limit_reached", totals.limitHit},
@@ -93,8 +118,6 @@ int renderCommand(const QStringList& arguments)
         fail(read.error);
         return BadInput;
     }
-    if (options->backend == QLatin1String("opencl"))
-        QTextStream(stderr) << "vectorfluid: the OpenCL backend is not built yet; using the reference backend\n";
     if (const QString error = checkOutputFolders(*options); !error.isEmpty()) {
         fail(error);
         return BadInput;
@@ -104,7 +127,7 @@ int renderCommand(const QStringList& arguments)
     const double dt = options->dt.value_or(read.scene.time.dt);
     RunTotals totals;
     try {
-        model::SceneRunner runner(read.scene);
+        model::SceneRunner runner(read.scene, backendFactory(*options));
         auto writeFrame = [&](qint64 step) {
             if (options->framesDir.isEmpty() || step % options->every != 0)
                 return QString();
@@ -113,7 +136,15 @@ int renderCommand(const QStringList& arguments)
         error = writeFrame(0);
         while (error.isEmpty() && totals.steps < steps && !totals.limitHit) {
             const auto start = std::chrono::steady_clock::now();
-            totals.limitHit = runner.step(dt).vertexLimitReached;
+            try {
+                if (runner.step(dt).vertexLimitReached) {
+                    totals.limitHit = true;
+                    totals.limit = QStringLiteral("max_vertices (%1) reached").arg(read.scene.tracking.maxVertices);
+                }
+            } catch (const sim::opencl::DeviceError& e) {  // e.g. the device ran out of memory
+                totals.limitHit = true;
+                totals.limit = QString::fromUtf8(e.what()).section('\n', 0, 0);
+            }
             totals.simSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             ++totals.steps;
             totals.vertexSteps += qint64(runner.simulation().vertexCount());
@@ -125,7 +156,7 @@ int renderCommand(const QStringList& arguments)
                 QTextStream(stdout) << "wrote " << out << '\n';
         }
         if (error.isEmpty() && !options->statsFile.isEmpty())
-            error = writeStats(options->statsFile, drawing, totals, runner.simulation().vertexCount());
+            error = writeStats(options->statsFile, drawing, totals, runner.simulation());
     } catch (const std::exception& e) {
         error = QStringLiteral("%1: %2").arg(options->scene, QString::fromUtf8(e.what()));
     }
@@ -134,9 +165,8 @@ int renderCommand(const QStringList& arguments)
         return BadInput;
     }
     if (totals.limitHit) {
-        fail(QStringLiteral("%1: max_vertices (%2) reached at step %3 of %4; the files hold the state at that step")
-                 .arg(options->scene)
-                 .arg(read.scene.tracking.maxVertices)
+        fail(QStringLiteral("%1: %2 at step %3 of %4; the files hold the state at that step")
+                 .arg(options->scene, totals.limit)
                  .arg(totals.steps)
                  .arg(steps));
         return LimitHit;

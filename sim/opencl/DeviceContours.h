@@ -8,6 +8,7 @@
 #include "sim/opencl/FlowBinding.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,9 @@ public:
     double strainInSpacings(const FlowBinding& flow, double t, double dt);
 
     // RK4 from flow.t0 to flow.t1 through `flow`, then spacing, refinement, area correction.
-    // False when refinement stopped at max_vertices.
+    // False when refinement stopped at max_vertices (or at what the device's memory holds); the
+    // contours are then valid but may have edges longer than d_i. Throws std::runtime_error when
+    // the flow moved a vertex to a non-finite position, DeviceError on a device failure.
     bool advect(const FlowBinding& flow);
 
     // The drop's push P → C + (P−C)·sqrt(1 + r²/|P−C|²) as the motion, then refinement (split
@@ -39,6 +42,15 @@ public:
 
     // Reads the geometry back (blocking). Positions widen to double; spacing as used last step.
     std::vector<Contour> read() const;
+
+    // The app's readback, asynchronous and double-buffered: requestRead() enqueues non-blocking
+    // copies of the geometry as it is now into one of two host staging buffers and returns at
+    // once (steps may be enqueued right behind it); takeRead() returns the newest requested
+    // geometry whose copy has completed, each at most once, or nothing when none is ready yet
+    // (with `wait`, it waits for the newest one instead). A request whose buffer is still being
+    // filled from two requests ago waits for that copy first.
+    void requestRead();
+    std::optional<std::vector<Contour>> takeRead(bool wait = false);
 
     // Bytes of device memory per vertex of capacity, all buffers that scale with vertices.
     static std::size_t bytesPerVertex();

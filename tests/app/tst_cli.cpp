@@ -249,6 +249,8 @@ private slots:
     void polylineHasOnlyLinesBezierIsShorter();
     void vertexLimitExitsThreeAndWrites();
 
+    void backendChoiceAndFallback_data();
+    void backendChoiceAndFallback();
     void devicesListsSomething();
     void helpExitsZero();
 
@@ -542,7 +544,9 @@ void TestCli::overridesEqualEditedScene()
 
 void TestCli::zeroStepsGivesStartingShapes()
 {
+    // The reference backend keeps the starting shapes' doubles exactly (OpenCL holds float32).
     const CliResult r = runCli({QStringLiteral("render"), kStirred, QStringLiteral("--steps"), QStringLiteral("0"),
+                                QStringLiteral("--backend"), QStringLiteral("reference"),
                                 QStringLiteral("--polyline"), QStringLiteral("--out"), path(QStringLiteral("a.svg")),
                                 QStringLiteral("--stats"), path(QStringLiteral("s.json"))});
     CHECK_OK(checkDone(r));
@@ -665,6 +669,40 @@ void TestCli::devicesListsSomething()
     const CliResult r = runCli({QStringLiteral("devices")});
     QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
     QVERIFY2(!r.out.trimmed().isEmpty() && r.out.endsWith('\n'), qPrintable(describe(r)));
+}
+
+void TestCli::backendChoiceAndFallback_data()
+{
+    QTest::addColumn<QStringList>("options");
+    QTest::addColumn<QString>("backend");
+    QTest::addColumn<bool>("needsDevice");
+    QTest::addColumn<QString>("saysOnStderr");
+    QTest::newRow("default") << QStringList() << QStringLiteral("opencl") << true << QString();
+    QTest::newRow("reference") << QStringList{QStringLiteral("--backend"), QStringLiteral("reference")}
+                               << QStringLiteral("reference") << false << QString();
+    QTest::newRow("no such device") << QStringList{QStringLiteral("--device"), QStringLiteral("999")}
+                                    << QStringLiteral("reference") << false
+                                    << QStringLiteral("OpenCL backend unavailable (there is no OpenCL device 999");
+}
+
+void TestCli::backendChoiceAndFallback()
+{
+    QFETCH(QStringList, options);
+    QFETCH(QString, backend);
+    QFETCH(bool, needsDevice);
+    QFETCH(QString, saysOnStderr);
+    if (needsDevice && runCli({QStringLiteral("devices")}).out.startsWith("no OpenCL devices"))
+        QSKIP("no OpenCL device on this machine");
+    const CliResult r = runCli(QStringList{QStringLiteral("render"), kStirred, QStringLiteral("--steps"), QStringLiteral("5"),
+                                           QStringLiteral("--stats"), path(QStringLiteral("s.json"))}
+                               + options);
+    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    if (saysOnStderr.isEmpty()) {
+        QVERIFY2(r.err.isEmpty(), qPrintable(describe(r)));
+    } else {
+        QVERIFY2(r.err.count('\n') == 1 && QString::fromUtf8(r.err).contains(saysOnStderr), qPrintable(describe(r)));
+    }
+    QCOMPARE(readJson(path(QStringLiteral("s.json")))[QStringLiteral("backend")].toString(), backend);
 }
 
 void TestCli::helpExitsZero()

@@ -1,0 +1,664 @@
+#include "sim/opencl/DeviceContours.h"
+
+#include "sim/opencl/KernelSources.h"
+#include "sim/opencl/Launch.h"
+#include "sim/opencl/Scan.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <stdexcept>
+
+namespace vf::sim::opencl {
+
+namespace {
+
+constexpr int maxRounds = 16;  // as ContourTracker::refine
+// The smallest capacity, and the smallest proximity grid (buckets): small scenes pay a fixed 1 MB
+// rather than a grid so coarse that every bucket holds vertices from far apart.
+constexpr std::size_t minCapacity = std::size_t(1) << 14;
+
+// The status buffer (contours.cl).
+enum : std::size_t { statusSticky = 0, statusPass = 1, statusStrain = 2, statusWords = 3 };
+constexpr cl_uint flagNonFinite = 1, flagSplitMismatch = 2;  // sticky
+constexpr cl_uint flagsShortEdge = 7, flagRecentred = 8, flagSplitCapped = 16;  // per pass
+
+enum : cl_int { termsArea = 0, termsWinding = 1 };  // TERMS_* of contours_area.cl
+enum : cl_int { motionFlow = 0, motionDrop = 1 };   // MOTION_* of contours.cl
+
+// MOTION_ARGS of contours.cl: how vertices move in this step, and where split vertices go.
+struct Motion {
+    cl_int kind = motionFlow;  // RK4 through the flow, or the drop's push
+    cl_float2 centre{{0.0f, 0.0f}};
+    cl_float radius = 0.0f;
+    cl_int rewind = 1;  // TrackingSettings::timeRewinding
+};
+
+void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Motion& motion)
+{
+    kernel.setArg(index++, motion.kind);
+    kernel.setArg(index++, motion.centre);
+    kernel.setArg(index++, motion.radius);
+    kernel.setArg(index++, motion.rewind);
+}
+
+// A kernel argument of the accumulation type acc_t: double on fp64 devices, else float.
+struct Accumulated {
+    double value;
+    bool fp64;
+};
+
+void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Accumulated& a)
+{
+    if (a.fp64)
+        kernel.setArg(index++, a.value);
+    else
+        kernel.setArg(index++, cl_float(a.value));
+}
+
+// The proximity grid (GRID_ARGS in contours_spacing.cl): cells as wide as the search radius on a
+// torus of 2^columnBits × 2^rowBits buckets.
+struct Grid {
+    cl_float cellSize;
+    cl_uint columnBits, rowBits;
+    std::size_t buckets() const { return std::size_t(1) << (columnBits + rowBits); }
+};
+
+void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Grid& grid)
+{
+    kernel.setArg(index++, grid.cellSize);
+    kernel.setArg(index++, grid.columnBits);
+    kernel.setArg(index++, grid.rowBits);
+}
+
+struct VertexSet {
+    cl::Buffer motion;   // float4 (position, previous)
+    cl::Buffer spacing;  // float d_i
+    cl::Buffer contour;  // uint contour index
+};
+
+// Geometry copied from the device, for read() and the asynchronous readback.
+struct Snapshot {
+    std::vector<cl_float4> motion;
+    std::vector<float> spacing;
+    std::vector<cl_uint> offset, count;
+    std::vector<int> regions;
+    std::vector<double> targets;
+    cl::Event done;         // the last of the copies
+    std::size_t serial = 0; // which request filled it; 0: none
+    bool taken = true;
+};
+
+bool isComplete(const cl::Event& event)
+{
+    return event.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() <= CL_COMPLETE;
+}
+
+std::vector<float> gaussianWeights(int radius)
+{
+    // As SpacingField (eq. 6): σ = w/2, normalised.
+    const double sigma = std::max(0.5, radius / 2.0);
+    std::vector<double> w(2 * radius + 1);
+    double sum = 0.0;
+    for (int k = -radius; k <= radius; ++k)
+        sum += w[k + radius] = std::exp(-0.5 * k * k / (sigma * sigma));
+    std::vector<float> weights;
+    for (double x : w)
+        weights.push_back(float(x / sum));
+    return weights;
+}
+
+template <typename F>
+auto guarded(F&& f) -> decltype(f())
+{
+    try {
+        return f();
+    } catch (const cl::Error& e) {
+        throw DeviceError("OpenCL error in the contour tracker: " + std::string(e.what()) + " (" +
+                          std::to_string(e.err()) + ")");
+    }
+}
+
+} // namespace
+
+struct DeviceContours::Impl {
+    Impl(Device& device, const TrackingSettings& settings, const std::string& flowSource);
+
+    cl::Buffer buffer(std::size_t bytes) const { return cl::Buffer(device.context(), CL_MEM_READ_WRITE, bytes); }
+    VertexSet vertexSet(std::size_t size) const;
+    std::size_t deviceLimit() const;
+    bool reserve(std::size_t needed);
+    void reserveContours(std::size_t needed);
+    std::size_t tiles() const { return roundUpToLocal(vertices + 1) / localSize; }
+    Grid grid() const;
+    Motion flowMotion() const { return Motion{motionFlow, {{0.0f, 0.0f}}, 0.0f, cl_int(settings.timeRewinding)}; }
+
+    bool move(const FlowBinding& flow, const Motion& motion, double spacingTime);
+    void computeSpacing(const FlowBinding& flow, double t);
+    void buildGrid(const Grid& grid);
+    bool refine(const FlowBinding& flow, const Motion& motion);
+    struct Pass {
+        bool withinBudget = true;
+        bool changed = false;  // the scanned vertex count differs from the current one
+        cl_uint flags = 0;     // FLAG_SHORT_EDGE(colour), FLAG_RECENTRED, FLAG_SPLIT_CAPPED
+        std::size_t total = 0; // the scanned vertex count
+    };
+    Pass countSplits(const FlowBinding& flow, const Motion& motion);
+    Pass splitPass(const FlowBinding& flow, const Motion& motion);
+    bool collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours);
+    void clearPassFlags();
+    Pass readPass();
+    void adopt(std::size_t total);
+    void contourTerms(cl_int mode, Vec2 point, double dropArea);
+    void correctAreas();
+    void enqueueSnapshot(Snapshot& s);
+    std::vector<Contour> toContours(const Snapshot& s) const;
+
+    Device& device;
+    cl::CommandQueue& queue;
+    const TrackingSettings settings;
+    const bool fp64;
+    const std::size_t accSize;
+    Scan countScan, sumScan;
+    cl::Kernel advect, strain, arcTiles, arcAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
+        splitCount, splitScatter, recountContours, collapseDecide, collapseScatter, recentreInPlace,
+        contourTermTiles, contourTermSums, correctArea;
+
+    // Vertices: two sets (compaction scatters from one into the other, then they swap) and scratch.
+    std::size_t capacity = 0, vertices = 0;
+    std::size_t paddedCapacity = 0;  // entries of each per-vertex array (see reserve())
+    VertexSet front, back;
+    cl::Buffer tileOffset;  // uint per vertex: offset within its tile, from the counting kernels
+    cl::Buffer work;        // uint per vertex: grid bucket counts, then starts; collapse actions
+    cl::Buffer tileTotals;  // one acc4 per tile: uint, acc_t or acc4 totals, as the pass needs
+
+    // Contours: device arrays, and the host's regions and area targets.
+    std::size_t contourCapacity = 0;
+    std::vector<int> regions;
+    std::vector<double> targets;
+    cl::Buffer contourOffset, contourCount;  // uint
+    cl::Buffer contourLength;                // float, the proximity term's arc lengths
+    cl::Buffer contourTarget, contourLambda; // acc_t, the area correction
+
+    cl::Buffer weights;  // eq. 6's Gaussian, constant
+    cl::Buffer status;   // statusWords uint
+    int smoothingRadius;
+
+    std::array<Snapshot, 2> staging;
+    std::size_t requests = 0;
+};
+
+DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, const std::string& flowSource)
+    : device(device_)
+    , queue(device_.queue())
+    , settings(settings_)
+    , fp64(device_.hasFp64())
+    , accSize(fp64 ? sizeof(double) : sizeof(float))
+    , countScan(device_, "uint", sizeof(cl_uint), commonBuildOptions(fp64))
+    , sumScan(device_, fp64 ? "double" : "float", accSize, commonBuildOptions(fp64))
+    , smoothingRadius(std::max(0, settings_.smoothingRadius))
+{
+    const std::string acc = fp64 ? "double" : "float";
+    const std::string options =
+        commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc + "2 -DVF_ACC4=" + acc + "4";
+    const std::string source = joinedKernelSources({"flow.h.cl"}) + flowSource + "\n" +
+                               joinedKernelSources({"workgroup.cl", "contours.cl", "contours_spacing.cl",
+                                                    "contours_refine.cl", "contours_area.cl"});
+    const cl::Program program = device.build(source, "contours.cl", options);
+    for (auto [kernel, name] : {std::pair{&advect, "advect"},
+                                {&strain, "strain"},
+                                {&arcTiles, "arcTiles"},
+                                {&arcAndCount, "arcAndCount"},
+                                {&gridScatter, "gridScatter"},
+                                {&nearestOtherPart, "nearestOtherPart"},
+                                {&rawSpacing, "rawSpacing"},
+                                {&smoothSpacing, "smoothSpacing"},
+                                {&splitCount, "splitCount"},
+                                {&splitScatter, "splitScatter"},
+                                {&recountContours, "recountContours"},
+                                {&collapseDecide, "collapseDecide"},
+                                {&collapseScatter, "collapseScatter"},
+                                {&recentreInPlace, "recentreInPlace"},
+                                {&contourTermTiles, "contourTermTiles"},
+                                {&contourTermSums, "contourTermSums"},
+                                {&correctArea, "correctArea"}})
+        *kernel = cl::Kernel(program, name);
+
+    std::vector<float> w = gaussianWeights(smoothingRadius);
+    weights = cl::Buffer(device.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, w.size() * sizeof(float), w.data());
+    status = buffer(statusWords * sizeof(cl_uint));
+}
+
+VertexSet DeviceContours::Impl::vertexSet(std::size_t size) const
+{
+    return {buffer(size * sizeof(cl_float4)), buffer(size * sizeof(float)), buffer(size * sizeof(cl_uint))};
+}
+
+std::size_t DeviceContours::Impl::deviceLimit() const
+{
+    // The largest buffer is a motion array (16 bytes per vertex, plus a tile of padding).
+    const std::uint64_t byAllocation = device.maxAllocation() / sizeof(cl_float4) - 2 * localSize;
+    const std::uint64_t byMemory = device.globalMemory() / DeviceContours::bytesPerVertex();
+    return std::size_t(std::min(byAllocation, byMemory));
+}
+
+// Grows the vertex capacity geometrically to hold `needed`, keeping the front set's contents.
+// False when the device cannot hold that many.
+bool DeviceContours::Impl::reserve(std::size_t needed)
+{
+    if (needed <= capacity)
+        return true;
+    const std::size_t limit = deviceLimit();
+    if (needed > limit)
+        return false;
+    // Past max_vertices growth is pointless (refinement stops there), unless a contour added
+    // directly needs it.
+    const std::size_t ceiling = std::max(needed, std::min(limit, std::max(settings.maxVertices, minCapacity)));
+    const std::size_t grown = std::min(ceiling, std::max({needed, 2 * capacity, minCapacity}));
+    // Counting kernels also write entry n; the proximity search reads up to 3 entries past the end.
+    paddedCapacity = roundUpToLocal(grown + 4);
+    VertexSet f = vertexSet(paddedCapacity);
+    if (vertices > 0) {
+        queue.enqueueCopyBuffer(front.motion, f.motion, 0, 0, vertices * sizeof(cl_float4));
+        queue.enqueueCopyBuffer(front.spacing, f.spacing, 0, 0, vertices * sizeof(float));
+        queue.enqueueCopyBuffer(front.contour, f.contour, 0, 0, vertices * sizeof(cl_uint));
+    }
+    front = f;
+    back = vertexSet(paddedCapacity);
+    tileOffset = buffer(paddedCapacity * sizeof(cl_uint));
+    work = buffer(paddedCapacity * sizeof(cl_uint));
+    tileTotals = buffer((paddedCapacity / localSize + 1) * 4 * accSize);
+    capacity = grown;
+    return true;
+}
+
+void DeviceContours::Impl::reserveContours(std::size_t needed)
+{
+    if (needed <= contourCapacity)
+        return;
+    const std::size_t grown = std::max<std::size_t>({needed, 2 * contourCapacity, 64});
+    cl::Buffer offset = buffer(grown * sizeof(cl_uint)), count = buffer(grown * sizeof(cl_uint));
+    cl::Buffer target = buffer(grown * accSize);
+    if (!regions.empty()) {
+        queue.enqueueCopyBuffer(contourOffset, offset, 0, 0, regions.size() * sizeof(cl_uint));
+        queue.enqueueCopyBuffer(contourCount, count, 0, 0, regions.size() * sizeof(cl_uint));
+        queue.enqueueCopyBuffer(contourTarget, target, 0, 0, regions.size() * accSize);
+    }
+    contourOffset = offset;
+    contourCount = count;
+    contourTarget = target;
+    contourLength = buffer(grown * sizeof(float));
+    contourLambda = buffer(grown * accSize);
+    contourCapacity = grown;
+}
+
+// About one bucket per vertex, within the work array (which also holds the scan's total).
+Grid DeviceContours::Impl::grid() const
+{
+    const std::size_t buckets =
+        std::min(std::bit_ceil(std::max(vertices, minCapacity)), std::bit_floor(paddedCapacity - 1));
+    const auto bits = cl_uint(std::countr_zero(buckets));
+    return {cl_float(settings.proximityRadius()), (bits + 1) / 2, bits / 2};
+}
+
+bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, double spacingTime)
+{
+    if (vertices == 0)
+        return true;
+    queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
+    launch(queue, advect, vertices, flow, motion, front.motion, cl_uint(vertices), status);
+    computeSpacing(flow, spacingTime);
+    const bool withinBudget = refine(flow, motion);
+    if (settings.areaCorrection)
+        correctAreas();
+    return withinBudget;
+}
+
+// Eqs. 3–7 into front.spacing. Scratch, in order of use: back.spacing holds the tiles' arc sums,
+// then each grid entry's distance to another part; back.contour the arc lengths, then the raw
+// spacing; back.motion the grid entries; `work` the bucket starts; tileOffset the vertices' ranks
+// within their buckets, then their slots in the grid.
+void DeviceContours::Impl::computeSpacing(const FlowBinding& flow, double t)
+{
+    const auto n = cl_uint(vertices);
+    if (!settings.adaptive) {
+        queue.enqueueFillBuffer(front.spacing, cl_float(settings.maxSpacing), 0, vertices * sizeof(float));
+        return;
+    }
+    const Grid g = grid();
+    if (settings.proximity) {
+        buildGrid(g);
+        launch(queue, nearestOtherPart, vertices, g, n, work, back.motion, contourLength, back.spacing);
+    }
+    launch(queue, rawSpacing, vertices, flow, cl_float(t), front.motion, front.contour, contourOffset, contourCount, n,
+           cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
+           cl_float(settings.proximityLength()), cl_int(settings.proximity), tileOffset, back.spacing, back.contour);
+    launch(queue, smoothSpacing, vertices, back.contour, front.contour, contourOffset, contourCount, n, weights,
+           cl_int(smoothingRadius), cl_float(settings.minSpacing()), cl_float(settings.maxSpacing), front.spacing);
+}
+
+void DeviceContours::Impl::buildGrid(const Grid& g)
+{
+    const auto n = cl_uint(vertices);
+    launch(queue, arcTiles, vertices + 1, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
+           tileTotals, cl_uint(tiles()));
+    sumScan.exclusive(tileTotals, tiles() + 1);
+    queue.enqueueFillBuffer(work, cl_uint(0), 0, (g.buckets() + 1) * sizeof(cl_uint));
+    launch(queue, arcAndCount, vertices, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
+           tileTotals, g, back.contour, contourLength, work, tileOffset);
+    countScan.exclusive(work, g.buckets() + 1);
+    launch(queue, gridScatter, vertices, front.motion, front.contour, n, back.contour, g, work, tileOffset,
+           back.motion);
+}
+
+// As ContourTracker::refine: split and collapse passes alternate until neither changes anything,
+// at most maxRounds times, then a last split pass keeps the upper bound that topology needs. A
+// split pass leaves no edge longer than its spacing (short of the depth cap), so a round whose
+// collapse pass changes nothing is the last: the next split pass would find nothing, and the
+// collapse pass after it would see what this one saw. That saves a counting pass per step.
+bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
+{
+    bool withinBudget = true, settled = false;
+    for (int round = 0; round < maxRounds && withinBudget && !settled; ++round) {
+        const Pass split = splitPass(flow, motion);
+        withinBudget = split.withinBudget;
+        // After a split the short edges flagged before it are stale: every colour gets a look.
+        const cl_uint colours = split.changed ? flagsShortEdge : split.flags & flagsShortEdge;
+        const bool collapsed = colours != 0 && collapsePass(flow, motion, colours);
+        settled = !collapsed && !(split.flags & flagSplitCapped);
+    }
+    if (!settled && withinBudget)
+        withinBudget = splitPass(flow, motion).withinBudget;
+    return withinBudget;
+}
+
+void DeviceContours::Impl::clearPassFlags()
+{
+    queue.enqueueFillBuffer(status, cl_uint(0), statusPass * sizeof(cl_uint), sizeof(cl_uint));
+}
+
+// One scalar and the status come back: the only synchronisation of a pass.
+DeviceContours::Impl::Pass DeviceContours::Impl::readPass()
+{
+    cl_uint total = 0;
+    std::array<cl_uint, statusWords> words{};
+    queue.enqueueReadBuffer(tileTotals, CL_FALSE, tiles() * sizeof(cl_uint), sizeof(cl_uint), &total);
+    queue.enqueueReadBuffer(status, CL_TRUE, 0, sizeof(words), words.data());
+    if (words[statusSticky] & flagNonFinite)
+        throw std::runtime_error("the flow moved a contour vertex to a non-finite position");
+    if (words[statusSticky] & flagSplitMismatch)
+        throw std::logic_error("DeviceContours: the split count and scatter kernels disagree");
+    return {true, total != vertices, words[statusPass], total};
+}
+
+// After a scatter into `back`: contours get their new ranges, the sets swap.
+void DeviceContours::Impl::adopt(std::size_t total)
+{
+    launch(queue, recountContours, regions.size(), contourOffset, contourCount, cl_uint(regions.size()), tileOffset,
+           tileTotals);
+    std::swap(front, back);
+    vertices = total;
+}
+
+DeviceContours::Impl::Pass DeviceContours::Impl::countSplits(const FlowBinding& flow, const Motion& motion)
+{
+    clearPassFlags();
+    launch(queue, splitCount, vertices + 1, flow, motion, front.motion, front.spacing, front.contour, contourOffset,
+           contourCount, cl_uint(vertices), tileOffset, tileTotals, cl_uint(tiles()), status);
+    countScan.exclusive(tileTotals, tiles() + 1);
+    return readPass();
+}
+
+DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& flow, const Motion& motion)
+{
+    Pass pass = countSplits(flow, motion);
+    if (!pass.changed)
+        return pass;
+    if (pass.total > settings.maxVertices)
+        return {false, false, pass.flags, vertices};
+    if (pass.total > capacity) {
+        if (!reserve(pass.total))
+            return {false, false, pass.flags, vertices};
+        pass = countSplits(flow, motion);  // the counts lived in the scratch that reserve() replaced
+    }
+    launch(queue, splitScatter, vertices, flow, motion, front.motion, front.spacing, front.contour, contourOffset,
+           contourCount, cl_uint(vertices), tileOffset, tileTotals, back.motion, back.spacing, back.contour, status);
+    adopt(pass.total);
+    return pass;
+}
+
+// The colour classes in `colours` (bit c for colour c) in turn, each a compaction of its deletions
+// (or, with none, recentring in place). Each decision pass also says which later colours still
+// touch short edges.
+bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours)
+{
+    bool changed = false;
+    for (cl_uint colour = 0; colour < 3; ++colour) {
+        if (!(colours & (1u << colour)))
+            continue;
+        clearPassFlags();
+        launch(queue, collapseDecide, vertices + 1, front.motion, front.spacing, front.contour, contourOffset,
+               contourCount, cl_uint(vertices), colour, work, tileOffset, tileTotals, cl_uint(tiles()), status);
+        countScan.exclusive(tileTotals, tiles() + 1);
+        const Pass pass = readPass();
+        if (pass.changed) {
+            launch(queue, collapseScatter, vertices, flow, motion, front.motion, front.spacing, front.contour,
+                   contourOffset, contourCount, cl_uint(vertices), work, tileOffset, tileTotals, back.motion,
+                   back.spacing, back.contour);
+            adopt(pass.total);
+        } else if (pass.flags & flagRecentred) {
+            launch(queue, recentreInPlace, vertices, flow, motion, front.motion, front.spacing, front.contour,
+                   contourOffset, contourCount, cl_uint(vertices), work);
+        }
+        changed = changed || pass.changed || (pass.flags & flagRecentred);
+        colours = pass.flags & flagsShortEdge;
+    }
+    return changed;
+}
+
+void DeviceContours::Impl::contourTerms(cl_int mode, Vec2 point, double dropArea)
+{
+    const cl_float2 p{{cl_float(point.x), cl_float(point.y)}};
+    launch(queue, contourTermTiles, vertices, mode, p, front.motion, front.contour, contourOffset, contourCount,
+           cl_uint(vertices), tileTotals);
+    launch(queue, contourTermSums, regions.size(), mode, p, Accumulated{dropArea, fp64}, front.motion, contourOffset,
+           contourCount, cl_uint(regions.size()), tileTotals, contourTarget, contourLambda);
+}
+
+void DeviceContours::Impl::correctAreas()
+{
+    contourTerms(termsArea, Vec2(0.0), 0.0);
+    launch(queue, correctArea, vertices, front.motion, front.contour, contourOffset, contourCount, cl_uint(vertices),
+           contourLambda, back.motion);
+    std::swap(front.motion, back.motion);
+}
+
+void DeviceContours::Impl::enqueueSnapshot(Snapshot& s)
+{
+    const std::size_t contours = regions.size();
+    s.motion.resize(vertices);
+    s.spacing.resize(vertices);
+    s.offset.resize(contours);
+    s.count.resize(contours);
+    s.regions = regions;
+    s.targets = targets;
+    if (contours == 0)
+        return;
+    if (vertices > 0) {
+        queue.enqueueReadBuffer(front.motion, CL_FALSE, 0, vertices * sizeof(cl_float4), s.motion.data());
+        queue.enqueueReadBuffer(front.spacing, CL_FALSE, 0, vertices * sizeof(float), s.spacing.data());
+    }
+    queue.enqueueReadBuffer(contourOffset, CL_FALSE, 0, contours * sizeof(cl_uint), s.offset.data());
+    queue.enqueueReadBuffer(contourCount, CL_FALSE, 0, contours * sizeof(cl_uint), s.count.data(), nullptr, &s.done);
+}
+
+std::vector<Contour> DeviceContours::Impl::toContours(const Snapshot& s) const
+{
+    std::vector<Contour> contours(s.regions.size());
+    for (std::size_t c = 0; c < contours.size(); ++c) {
+        Contour& out = contours[c];
+        out.region = s.regions[c];
+        out.targetArea = s.targets[c];
+        for (std::size_t i = s.offset[c]; i < s.offset[c] + s.count[c]; ++i) {
+            const cl_float4& m = s.motion[i];
+            out.positions.emplace_back(m.s[0], m.s[1]);
+            out.previous.emplace_back(m.s[2], m.s[3]);
+            out.spacing.push_back(s.spacing[i]);
+        }
+    }
+    return contours;
+}
+
+DeviceContours::DeviceContours(Device& device, const TrackingSettings& settings, const std::string& flowSource)
+    : m(guarded([&] { return std::make_unique<Impl>(device, settings, flowSource); }))
+{
+}
+
+DeviceContours::~DeviceContours() = default;
+
+void DeviceContours::addContour(int region, const Polygon& polygon)
+{
+    guarded([&] {
+        const Polygon points = resample(polygon, m->settings.maxSpacing);
+        if (!m->reserve(std::max<std::size_t>(1, m->vertices + points.size())))  // allocates the scratch too
+            throw DeviceError("the OpenCL device cannot hold " + std::to_string(m->vertices + points.size()) +
+                              " contour vertices");
+        const std::size_t c = m->regions.size();
+        m->reserveContours(c + 1);
+        std::vector<cl_float4> motion;
+        for (const Vec2& p : points)
+            motion.push_back({{cl_float(p.x), cl_float(p.y), cl_float(p.x), cl_float(p.y)}});
+        const std::vector<float> spacing(points.size(), float(m->settings.maxSpacing));
+        const std::vector<cl_uint> contour(points.size(), cl_uint(c));
+        const std::size_t at = m->vertices;
+        const std::array<cl_uint, 2> range{cl_uint(at), cl_uint(points.size())};
+        const double target = signedArea(points);
+        const float targetFloat = float(target);
+        cl::CommandQueue& q = m->queue;
+        if (!points.empty()) {
+            q.enqueueWriteBuffer(m->front.motion, CL_FALSE, at * sizeof(cl_float4), motion.size() * sizeof(cl_float4),
+                                 motion.data());
+            q.enqueueWriteBuffer(m->front.spacing, CL_FALSE, at * sizeof(float), spacing.size() * sizeof(float),
+                                 spacing.data());
+            q.enqueueWriteBuffer(m->front.contour, CL_FALSE, at * sizeof(cl_uint), contour.size() * sizeof(cl_uint),
+                                 contour.data());
+        }
+        q.enqueueWriteBuffer(m->contourOffset, CL_FALSE, c * sizeof(cl_uint), sizeof(cl_uint), &range[0]);
+        q.enqueueWriteBuffer(m->contourCount, CL_FALSE, c * sizeof(cl_uint), sizeof(cl_uint), &range[1]);
+        q.enqueueWriteBuffer(m->contourTarget, CL_FALSE, c * m->accSize, m->accSize,
+                             m->fp64 ? static_cast<const void*>(&target) : static_cast<const void*>(&targetFloat));
+        q.finish();  // the host vectors above go out of scope
+        m->regions.push_back(region);
+        m->targets.push_back(target);
+        m->vertices += points.size();
+    });
+}
+
+void DeviceContours::growTargetAreasAround(Vec2 p, double area)
+{
+    guarded([&] {
+        if (m->regions.empty())
+            return;
+        m->contourTerms(termsWinding, p, area);
+        const std::size_t contours = m->regions.size();
+        if (m->fp64) {
+            m->queue.enqueueReadBuffer(m->contourTarget, CL_TRUE, 0, contours * sizeof(double), m->targets.data());
+        } else {
+            std::vector<float> t(contours);
+            m->queue.enqueueReadBuffer(m->contourTarget, CL_TRUE, 0, contours * sizeof(float), t.data());
+            std::copy(t.begin(), t.end(), m->targets.begin());
+        }
+    });
+}
+
+double DeviceContours::strainInSpacings(const FlowBinding& flow, double t, double dt)
+{
+    return guarded([&] {
+        if (m->vertices == 0)
+            return 0.0;
+        cl::CommandQueue& q = m->queue;
+        q.enqueueFillBuffer(m->status, cl_uint(0), statusStrain * sizeof(cl_uint), sizeof(cl_uint));
+        launch(q, m->strain, m->vertices, flow, cl_float(t), cl_float(dt), m->front.motion, m->front.spacing,
+               m->front.contour, m->contourOffset, m->contourCount, cl_uint(m->vertices), m->status);
+        float worst = 0.0f;
+        q.enqueueReadBuffer(m->status, CL_TRUE, statusStrain * sizeof(cl_uint), sizeof(float), &worst);
+        return double(worst);
+    });
+}
+
+bool DeviceContours::advect(const FlowBinding& flow)
+{
+    return guarded([&] { return m->move(flow, m->flowMotion(), flow.t1); });
+}
+
+bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow, double t)
+{
+    return guarded([&] {
+        Motion push = m->flowMotion();
+        push.kind = motionDrop;
+        push.centre = {{cl_float(center.x), cl_float(center.y)}};
+        push.radius = cl_float(radius);
+        return m->move(flow, push, t);
+    });
+}
+
+std::size_t DeviceContours::vertexCount() const
+{
+    return m->vertices;
+}
+
+std::vector<Contour> DeviceContours::read() const
+{
+    return guarded([&] {
+        Snapshot s;
+        m->enqueueSnapshot(s);
+        if (s.done())
+            s.done.wait();
+        return m->toContours(s);
+    });
+}
+
+void DeviceContours::requestRead()
+{
+    guarded([&] {
+        Snapshot& s = m->staging[m->requests % 2];
+        if (s.done())
+            s.done.wait();  // still being filled from two requests ago
+        s.done = cl::Event();
+        m->enqueueSnapshot(s);
+        s.serial = ++m->requests;
+        s.taken = false;
+        m->queue.flush();
+    });
+}
+
+std::optional<std::vector<Contour>> DeviceContours::takeRead(bool wait)
+{
+    return guarded([&]() -> std::optional<std::vector<Contour>> {
+        Snapshot* newest = &m->staging[0];
+        Snapshot* older = &m->staging[1];
+        if (older->serial > newest->serial)
+            std::swap(newest, older);
+        if (wait && !newest->taken && newest->done())
+            newest->done.wait();
+        for (Snapshot* s : {newest, older}) {
+            if (s->taken || (s->done() && !isComplete(s->done)))
+                continue;
+            newest->taken = older->taken = true;  // an older copy is superseded by a newer one
+            return m->toContours(*s);
+        }
+        return std::nullopt;
+    });
+}
+
+std::size_t DeviceContours::bytesPerVertex()
+{
+    // Two vertex sets of float4 motion + float spacing + uint contour (24 bytes each), the tile
+    // offsets and the work array (4 bytes each): 56. Per tile of 64 vertices one acc4 of 32 bytes
+    // (0.5 per vertex), and the scans' block totals (under 0.05): rounded up, 57.
+    constexpr std::size_t perSet = sizeof(cl_float4) + sizeof(float) + sizeof(cl_uint);
+    return 2 * perSet + 2 * sizeof(cl_uint) + 1;
+}
+
+} // namespace vf::sim::opencl

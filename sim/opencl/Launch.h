@@ -1,0 +1,47 @@
+#pragma once
+// Kernel launches with the fixed local size every kernel of the OpenCL backend is compiled for
+// (reqd_work_group_size): PoCL compiles a kernel once per local size, so one size everywhere means
+// one compilation, and GPUs get a full wavefront. Global sizes are rounded up; kernels check bounds.
+#include "sim/opencl/FlowBinding.h"
+
+#include <cstddef>
+#include <string>
+
+namespace vf::sim::opencl {
+
+inline constexpr std::size_t localSize = 64;
+
+inline std::size_t roundUpToLocal(std::size_t items)
+{
+    return (items + localSize - 1) / localSize * localSize;
+}
+
+// The build options every program of the backend shares.
+inline std::string commonBuildOptions(bool fp64)
+{
+    return "-cl-std=CL1.2 -DVF_LOCAL=" + std::to_string(localSize) + (fp64 ? " -DVF_FP64" : "");
+}
+
+inline void setKernelArg(cl::Kernel& kernel, cl_uint& index, const FlowBinding& flow)
+{
+    index = flow.bind(kernel, index);
+}
+
+template <typename T>
+void setKernelArg(cl::Kernel& kernel, cl_uint& index, const T& value)
+{
+    kernel.setArg(index++, value);
+}
+
+// Sets `args` in order (a FlowBinding counts as its 10 arguments) and enqueues `kernel` over at
+// least `items` work-items.
+template <typename... Args>
+void launch(cl::CommandQueue& queue, cl::Kernel& kernel, std::size_t items, const Args&... args)
+{
+    cl_uint index = 0;
+    (setKernelArg(kernel, index, args), ...);
+    queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(roundUpToLocal(items == 0 ? 1 : items)),
+                               cl::NDRange(localSize));
+}
+
+} // namespace vf::sim::opencl

@@ -1,0 +1,105 @@
+#include "sim/opencl/OpenClSimulation.h"
+
+#include "sim/opencl/AnalyticSource.h"
+#include "sim/opencl/KernelSources.h"
+
+namespace vf::sim::opencl {
+
+namespace {
+
+bool isFluid(const SimulationSettings& s)
+{
+    return s.flow == SimulationSettings::FlowType::Fluid;
+}
+
+std::string flowSource(const SimulationSettings& s)
+{
+    const std::string header = joinedKernelSources({"flow.h.cl"});
+    if (isFluid(s))
+        return header + joinedKernelSources({"flow_fluid.cl"});
+    try {
+        return header + analyticFlowSource(s.u, s.v);
+    } catch (const UnsupportedExpression& e) {
+        throw DeviceError(e.what());
+    }
+}
+
+} // namespace
+
+OpenClSimulation::OpenClSimulation(const SimulationSettings& settings, std::optional<int> deviceIndex)
+    : m_settings((validateSettings(settings), settings))
+    , m_device(Device::open(deviceIndex))
+{
+    if (isFluid(settings)) {
+        m_fluid = std::make_unique<DeviceFluid>(m_device, settings.fluid);
+    } else {
+        const cl::Buffer placeholder(m_device.context(), CL_MEM_READ_ONLY, sizeof(float));
+        m_placeholders.u0 = m_placeholders.v0 = m_placeholders.u1 = m_placeholders.v1 = placeholder;
+    }
+    m_contours = std::make_unique<DeviceContours>(m_device, settings.tracking, flowSource(settings));
+}
+
+OpenClSimulation::~OpenClSimulation() = default;
+
+FlowBinding OpenClSimulation::binding(double t0, double t1) const
+{
+    if (m_fluid)
+        return m_fluid->binding(t0, t1);
+    FlowBinding b = m_placeholders;
+    b.t0 = t0;
+    b.t1 = t1;
+    return b;
+}
+
+int OpenClSimulation::addRegion(const std::vector<Polygon>& contours)
+{
+    for (const Polygon& p : contours)
+        m_contours->addContour(m_regionCount, p);
+    return m_regionCount++;
+}
+
+int OpenClSimulation::drop(Vec2 center, double radius)
+{
+    // As ReferenceSimulation::drop: contours around the centre come to enclose the drop as well.
+    const Polygon dropped = circle(center, radius, m_settings.tracking.maxSpacing);
+    m_contours->growTargetAreasAround(center, signedArea(dropped));
+    m_contours->drop(center, radius, binding(m_time, m_time), m_time);
+    return addRegion({dropped});
+}
+
+void OpenClSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration)
+{
+    if (m_fluid)
+        m_pendingStylus.push_back({from, to, radius, duration});
+}
+
+StepReport OpenClSimulation::step(double dt)
+{
+    StepReport report;
+    report.substeps = substepCount(m_contours->strainInSpacings(binding(m_time, m_time), m_time, dt),
+                                   m_settings.tracking);
+    const double h = dt / report.substeps;
+    for (int k = 0; k < report.substeps && !report.vertexLimitReached; ++k) {
+        if (m_fluid) {
+            for (const StylusSegment& s : m_pendingStylus) {
+                const StylusSegment p = s.part(k, report.substeps);
+                m_fluid->addStylus(p.from, p.to, p.radius, p.duration);
+            }
+            m_fluid->step(h);
+        }
+        report.vertexLimitReached = !m_contours->advect(binding(m_time, m_time + h));
+        m_time += h;
+    }
+    m_pendingStylus.clear();
+    return report;
+}
+
+std::unique_ptr<Simulation> makeSimulation(const SimulationSettings& settings, const std::string& backend,
+                                           std::optional<int> deviceIndex)
+{
+    if (backend == "opencl")
+        return std::make_unique<OpenClSimulation>(settings, deviceIndex);
+    return makeReferenceSimulation(settings);
+}
+
+} // namespace vf::sim::opencl

@@ -1,0 +1,293 @@
+// Refinement (paper §3.1, §3.3) by stream compaction. Each pass decides, for every vertex at
+// once, how many vertices it becomes (a split edge: 1 + the vertices inserted after it; a
+// collapse: 0 or 1), scans those counts and scatters the store into the other buffer, so every
+// contour stays contiguous and in order with no per-contour serial work and perfect balance.
+// The counting kernels fuse the first level of the scan: they leave each vertex's offset within
+// its tile of VF_LOCAL vertices and each tile's total, which Scan turns into tile bases.
+
+// The store index vertex i moves to, or the new size of the store for i = n.
+VF_INLINE uint scannedOffset(__global const uint *tileOffset, __global const uint *tileBase, uint i)
+{
+    return tileBase[i / VF_LOCAL] + tileOffset[i];
+}
+
+// Leaves the per-tile offsets and totals of `produced` (see above); all work-items must call it.
+VF_INLINE void scanTile(__local uint *scratch, uint produced, __global uint *tileOffset, __global uint *tileTotals,
+                        uint tiles)
+{
+    const uint i = get_global_id(0);
+    uint total;
+    tileOffset[i] = VF_LOCAL_SCAN(uint)(scratch, produced, &total);
+    if (get_local_id(0) == 0)
+        tileTotals[get_group_id(0)] = total;
+    if (i == 0)
+        tileTotals[tiles] = 0;  // the scan leaves the new vertex count here
+}
+
+// The split of one edge (a, b), exactly as the reference's split pass: while the sub-edge
+// after the current vertex is longer than its spacing (d_p + d_q)/2, it gets a vertex at the
+// midpoint of its endpoints at the start of the motion, moved by the motion (eq. 2). Splitting
+// is depth first, so vertices come out in contour order. Inserted vertices take min(d_a, d_b):
+// with the mean, one half of an edge just over its spacing would fall under half of its own, and
+// split and collapse would undo each other. Returns the number of vertices inserted; with `out`
+// set, also writes them (at most `limit`) from out[at]. The count and the scatter kernels run
+// this same code on the same inputs, so both see the same vertices. Every piece then respects its
+// spacing, unless the depth cap stopped a split (*capped is set).
+#define SPLIT_DEPTH 24  // at most 2^24 pieces per edge: far beyond any max_vertices
+
+VF_INLINE uint splitEdge(FLOW_PARAMS, MOTION_ARGS, float4 a, float4 b, float spacingA, float spacingB,
+                         __global float4 *outMotion, __global float *outSpacing, __global uint *outContour, uint at,
+                         uint limit, uint contour, bool *capped)
+{
+    const float inserted = fmin(spacingA, spacingB);
+    float4 pending[SPLIT_DEPTH];  // right ends of the sub-edges still to visit, (position, previous)
+    int top = 0;
+    pending[0] = b;
+    float4 left = a;
+    float leftSpacing = spacingA;
+    uint count = 0;
+    for (;;) {
+        const float4 right = pending[top];
+        const float rightSpacing = top == 0 ? spacingB : inserted;
+        const bool tooLong = distance(left.xy, right.xy) > 0.5f * (leftSpacing + rightSpacing);
+        *capped = *capped || (tooLong && top + 1 == SPLIT_DEPTH);
+        if (tooLong && top + 1 < SPLIT_DEPTH) {
+            const float2 start = 0.5f * (left.zw + right.zw);
+            const float2 p = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : 0.5f * (left.xy + right.xy);
+            pending[++top] = (float4)(p, start);
+            continue;
+        }
+        if (top == 0)
+            return count;
+        if (outMotion && count < limit) {
+            outMotion[at + count] = right;
+            outSpacing[at + count] = inserted;
+            outContour[at + count] = contour;
+        }
+        ++count;
+        left = right;
+        leftSpacing = inserted;
+        --top;
+    }
+}
+
+// The colour class of the k-th of `count` vertices in the collapse passes (below).
+VF_INLINE uint collapseColour(uint k, uint count)
+{
+    return (count & 1u) && k == count - 1 ? 2u : k & 1u;
+}
+
+// For the host: which collapse passes the short edge after the k-th vertex needs (its victim is
+// one of its two ends).
+VF_INLINE uint shortEdgeFlags(uint k, uint count)
+{
+    const uint next = k + 1 == count ? 0 : k + 1;
+    return FLAG_SHORT_EDGE(collapseColour(k, count)) | FLAG_SHORT_EDGE(collapseColour(next, count));
+}
+
+#define VERTEX_SET(prefix)                                                                     \
+    __global float4 *prefix##Motion, __global float *prefix##Spacing, __global uint *prefix##Contour
+#define CONST_VERTEX_SET(prefix)                                                               \
+    __global const float4 *prefix##Motion, __global const float *prefix##Spacing, __global const uint *prefix##Contour
+
+// Per vertex: 1 + the vertices its edge to the next one gets. Also flags short edges by the colours
+// of their ends, so the host can skip the collapse passes that would find nothing to do, and a
+// split stopped by the depth cap.
+VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
+                          __global const uint *contourCount, uint n, __global uint *tileOffset,
+                          __global uint *tileTotals, uint tiles, __global uint *status)
+{
+    __local uint scratch[VF_SCAN_SCRATCH];
+    __local uint groupFlags;
+    const uint i = get_global_id(0);
+    if (get_local_id(0) == 0)
+        groupFlags = 0;
+    barrier(CLK_LOCAL_MEM_FENCE);
+    uint produced = 0;
+    if (i < n) {
+        const uint c = inContour[i], count = contourCount[c];
+        const uint j = nextIn(i, contourOffset[c], count);
+        const float4 a = inMotion[i], b = inMotion[j];
+        const float length = distance(a.xy, b.xy), spacing = 0.5f * (inSpacing[i] + inSpacing[j]);
+        produced = 1;
+        bool capped = false;
+        if (length > spacing)
+            produced += splitEdge(FLOW_PASS, MOTION_PASS, a, b, inSpacing[i], inSpacing[j], 0, 0, 0, 0, 0, c, &capped);
+        if (capped)
+            atomic_or(&groupFlags, FLAG_SPLIT_CAPPED);
+        if (length < 0.5f * spacing && count > 3)
+            atomic_or(&groupFlags, shortEdgeFlags(i - contourOffset[c], count));
+    }
+    scanTile(scratch, produced, tileOffset, tileTotals, tiles);
+    if (get_local_id(0) == 0 && groupFlags)
+        atomic_or(&status[STATUS_PASS], groupFlags);
+}
+
+VF_KERNEL void splitScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
+                            __global const uint *contourCount, uint n, __global const uint *tileOffset,
+                            __global const uint *tileBase, VERTEX_SET(out), __global uint *status)
+{
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const uint at = scannedOffset(tileOffset, tileBase, i);
+    const uint expected = scannedOffset(tileOffset, tileBase, i + 1) - at - 1;
+    const uint c = inContour[i];
+    outMotion[at] = inMotion[i];
+    outSpacing[at] = inSpacing[i];
+    outContour[at] = c;
+    if (expected == 0)
+        return;
+    const uint j = nextIn(i, contourOffset[c], contourCount[c]);
+    bool capped = false;
+    const uint inserted = splitEdge(FLOW_PASS, MOTION_PASS, inMotion[i], inMotion[j], inSpacing[i], inSpacing[j],
+                                    outMotion, outSpacing, outContour, at + 1, expected, c, &capped);
+    if (inserted != expected)
+        atomic_or(&status[STATUS_STICKY], FLAG_SPLIT_MISMATCH);  // a bug, reported by the host
+}
+
+// After a scatter: where each contour now starts and how many vertices it has.
+VF_KERNEL void recountContours(__global uint *contourOffset, __global uint *contourCount, uint contours,
+                               __global const uint *tileOffset, __global const uint *tileBase)
+{
+    const uint c = get_global_id(0);
+    if (c >= contours)
+        return;
+    const uint first = contourOffset[c], end = first + contourCount[c];
+    const uint newFirst = scannedOffset(tileOffset, tileBase, first);
+    contourOffset[c] = newFirst;
+    contourCount[c] = scannedOffset(tileOffset, tileBase, end) - newFirst;
+}
+
+// Collapse. The reference walks each ring and removes, for every edge shorter than half its
+// spacing, the straighter endpoint (smaller turning angle), so corners and curl tips survive; a
+// vertex whose removal would leave an edge longer than its spacing is recentred instead. Here all
+// vertices decide at once, in three colour classes so that no two neighbours act in the same
+// pass: a vertex only reads its neighbours, which then stay put. Even contours alternate colours
+// 0 and 1; odd ones give their last vertex colour 2. A contour never drops under 3 vertices: one
+// of 5 or more keeps at least 3 whichever colour acts, and one of 4 lets its second same-colour
+// vertex go only when the first stays.
+#define ACTION_KEEP 0u
+#define ACTION_DELETE 1u
+#define ACTION_RECENTRE 2u
+
+VF_INLINE float turning(float2 before, float2 at, float2 after)
+{
+    const float2 e0 = at - before, e1 = after - at;
+    return fabs(atan2(cross2(e0, e1), dot(e0, e1)));
+}
+
+VF_INLINE uint collapseAction(__global const float4 *motion, __global const float *spacing, uint v, uint first,
+                              uint count)
+{
+    const uint a = previousIn(v, first, count), b = nextIn(v, first, count);
+    const float2 pa = motion[a].xy, pv = motion[v].xy, pb = motion[b].xy;
+    const float da = spacing[a], dv = spacing[v], db = spacing[b];
+    const bool shortBefore = distance(pa, pv) < 0.25f * (da + dv);
+    const bool shortAfter = distance(pv, pb) < 0.25f * (dv + db);
+    if (!shortBefore && !shortAfter)
+        return ACTION_KEEP;
+    // The reference's victim of edge (p, q) is p when turning(p) < turning(q), else q.
+    const float here = turning(pa, pv, pb);
+    const bool victim =
+        (shortBefore && !(turning(motion[previousIn(a, first, count)].xy, pa, pv) < here)) ||
+        (shortAfter && here < turning(pv, pb, motion[nextIn(b, first, count)].xy));
+    if (!victim)
+        return ACTION_KEEP;
+    return distance(pa, pb) <= 0.5f * (da + db) ? ACTION_DELETE : ACTION_RECENTRE;
+}
+
+VF_KERNEL void collapseDecide(__global const float4 *motion, __global const float *spacing, CONTOUR_ARGS, uint n,
+                              uint colour, __global uint *action, __global uint *tileOffset,
+                              __global uint *tileTotals, uint tiles, __global uint *status)
+{
+    __local uint scratch[VF_SCAN_SCRATCH];
+    __local uint groupFlags;
+    const uint i = get_global_id(0);
+    if (get_local_id(0) == 0)
+        groupFlags = 0;
+    barrier(CLK_LOCAL_MEM_FENCE);
+    uint act = ACTION_KEEP;
+    if (i < n) {
+        const uint c = contourOf[i], first = contourOffset[c], count = contourCount[c], k = i - first;
+        if (count > 3 && collapseColour(k, count) == colour) {
+            act = collapseAction(motion, spacing, i, first, count);
+            if (count == 4 && k >= 2 && act == ACTION_DELETE &&
+                collapseAction(motion, spacing, i - 2, first, count) == ACTION_DELETE)
+                act = ACTION_KEEP;
+        }
+        const uint j = nextIn(i, first, count);
+        if (count > 3 && distance(motion[i].xy, motion[j].xy) < 0.25f * (spacing[i] + spacing[j]))
+            atomic_or(&groupFlags, shortEdgeFlags(k, count));
+        if (act == ACTION_RECENTRE)
+            atomic_or(&groupFlags, FLAG_RECENTRED);
+        action[i] = act;
+    }
+    scanTile(scratch, act != ACTION_DELETE && i < n ? 1u : 0u, tileOffset, tileTotals, tiles);
+    if (get_local_id(0) == 0 && groupFlags)
+        atomic_or(&status[STATUS_PASS], groupFlags);
+}
+
+// Moves v to the time-rewound midpoint of its neighbours (eq. 2), as if v had been removed and
+// the merged edge split again. Where the curve between them is lopsided, so that one half would
+// come out short, bisection along the rewound edge finds a point far enough from both.
+VF_INLINE float4 recentred(FLOW_PARAMS, MOTION_ARGS, float4 a, float4 b, float spacingA, float spacingB)
+{
+    const float dv = fmin(spacingA, spacingB);
+    const float needA = 0.25f * (spacingA + dv), needB = 0.25f * (spacingB + dv);
+    float lo = 0.0f, hi = 1.0f, s = 0.5f;
+    float2 start = mix(a.zw, b.zw, s);
+    float2 x = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : mix(a.xy, b.xy, s);
+    for (int k = 0; k < 40; ++k) {
+        const float toA = distance(x, a.xy), toB = distance(x, b.xy);
+        if (toA >= needA && toB >= needB)
+            break;
+        if (toA < toB)
+            lo = s;
+        else
+            hi = s;
+        s = 0.5f * (lo + hi);
+        start = mix(a.zw, b.zw, s);
+        x = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : mix(a.xy, b.xy, s);
+    }
+    return (float4)(x, start);
+}
+
+VF_INLINE void writeRecentred(FLOW_PARAMS, MOTION_ARGS, __global const float4 *inMotion,
+                              __global const float *inSpacing, uint v, uint first, uint count,
+                              __global float4 *outMotion, __global float *outSpacing, uint at)
+{
+    const uint a = previousIn(v, first, count), b = nextIn(v, first, count);
+    outMotion[at] = recentred(FLOW_PASS, MOTION_PASS, inMotion[a], inMotion[b], inSpacing[a], inSpacing[b]);
+    outSpacing[at] = fmin(inSpacing[a], inSpacing[b]);
+}
+
+VF_KERNEL void collapseScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
+                               __global const uint *contourCount, uint n, __global const uint *action,
+                               __global const uint *tileOffset, __global const uint *tileBase, VERTEX_SET(out))
+{
+    const uint i = get_global_id(0);
+    if (i >= n || action[i] == ACTION_DELETE)
+        return;
+    const uint at = scannedOffset(tileOffset, tileBase, i), c = inContour[i];
+    outContour[at] = c;
+    if (action[i] == ACTION_RECENTRE) {
+        writeRecentred(FLOW_PASS, MOTION_PASS, inMotion, inSpacing, i, contourOffset[c], contourCount[c], outMotion,
+                       outSpacing, at);
+    } else {
+        outMotion[at] = inMotion[i];
+        outSpacing[at] = inSpacing[i];
+    }
+}
+
+// A collapse pass that only recentres needs no compaction: recentred vertices move in place
+// (their neighbours do not act in the same pass, so nothing they read changes).
+VF_KERNEL void recentreInPlace(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, __global float *spacing, CONTOUR_ARGS,
+                               uint n, __global const uint *action)
+{
+    const uint i = get_global_id(0);
+    if (i >= n || action[i] != ACTION_RECENTRE)
+        return;
+    const uint c = contourOf[i];
+    writeRecentred(FLOW_PASS, MOTION_PASS, motion, spacing, i, contourOffset[c], contourCount[c], motion, spacing, i);
+}

@@ -1,0 +1,198 @@
+// The adaptive spacing d_i of paper §3.3 (eqs. 3–7), as sim/SpacingField and sim/ProximityGrid:
+//   d_i = d_max · exp(−|κ_i|·Lκ − |ω(v_i)|/ω_ref) · (1 − exp(−dist_i/Lp)), smoothed along the
+//   contour with a Gaussian window (eq. 6), + ε, clamped to d_max.
+//
+// dist_i (eq. 7) is the distance to the nearest vertex of another part of any contour, found in a
+// uniform grid built by counting sort ([Grand 2007], paper §3.4). Cells are as wide as the search
+// radius. The buckets, a power of two that follows the vertex count, form a torus that the plane
+// wraps onto, so the grid needs no bounding box (no read-back) and stays small however far
+// contours spread, and neighbouring cells stay neighbours in memory (a CPU device lives on its
+// caches). At a million vertices and the default d_max the torus spans 8 canvas units; cells a
+// whole torus apart share buckets, which only adds candidates that the distance test rejects.
+//
+// "Another part" needs the arc length along the contour: a vertex of the same contour counts when
+// the shorter way along the contour is more than twice the straight distance. Arc lengths are a
+// prefix sum of edge lengths, split into a float sum within each work-group tile and the tiles'
+// prefix in acc_t (double on fp64 devices), so arcs stay precise however long the store.
+
+#define GRID_ARGS float cellSize, uint columnBits, uint rowBits
+#define GRID_PASS cellSize, columnBits, rowBits
+
+VF_INLINE int2 cellOf(float cellSize, float2 p)
+{
+    // floor, clamped into int's range (convert_int2_sat_rtn does the same, several times slower).
+    return convert_int2(clamp(floor(p / cellSize), -1e9f, 1e9f));
+}
+
+VF_INLINE uint columnOf(GRID_ARGS, int x)
+{
+    return (uint)x & ((1u << columnBits) - 1u);
+}
+
+VF_INLINE uint rowStart(GRID_ARGS, int y)
+{
+    return ((uint)y & ((1u << rowBits) - 1u)) << columnBits;
+}
+
+VF_INLINE uint bucketOf(GRID_ARGS, int2 cell)
+{
+    return rowStart(GRID_PASS, cell.y) + columnOf(GRID_PASS, cell.x);
+}
+
+// Edge lengths to the next vertex, summed within each tile of VF_LOCAL vertices (exclusive), and
+// each tile's total for the scan. Runs over n + 1 vertices so that the prefix at n exists.
+VF_KERNEL void arcTiles(__global const float4 *motion, CONTOUR_ARGS, uint n, __global float *tileArc,
+                        __global acc_t *tileTotals, uint tiles)
+{
+    __local float scratch[VF_SCAN_SCRATCH];
+    const uint i = get_global_id(0);
+    float length = 0.0f;
+    if (i < n) {
+        const uint c = contourOf[i];
+        length = distance(motion[i].xy, motion[nextIn(i, contourOffset[c], contourCount[c])].xy);
+    }
+    float total;
+    tileArc[i] = VF_LOCAL_SCAN(float)(scratch, length, &total);
+    if (get_local_id(0) == 0)
+        tileTotals[get_group_id(0)] = total;
+    if (i == 0)
+        tileTotals[tiles] = 0;  // the scan leaves the grand total here
+}
+
+// Sum of the edge lengths before vertex i in the whole store.
+VF_INLINE acc_t arcBefore(__global const float *tileArc, __global const acc_t *tilePrefix, uint i)
+{
+    return tilePrefix[i / VF_LOCAL] + (acc_t)tileArc[i];
+}
+
+// Arc length from the contour's first vertex, the contour's length, the grid's per-bucket counts
+// and each vertex's rank in its bucket. Counts and ranks come from atomics: the counts do not
+// depend on the order in which work-items arrive, the ranks do (see gridScatter).
+VF_KERNEL void arcAndCount(__global const float4 *motion, CONTOUR_ARGS, uint n, __global const float *tileArc,
+                           __global const acc_t *tilePrefix, GRID_ARGS, __global float *arc,
+                           __global float *contourLength, __global uint *bucketCounts, __global uint *rank)
+{
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const uint c = contourOf[i], first = contourOffset[c];
+    const acc_t start = arcBefore(tileArc, tilePrefix, first);
+    arc[i] = (float)(arcBefore(tileArc, tilePrefix, i) - start);
+    if (i == first)
+        contourLength[c] = (float)(arcBefore(tileArc, tilePrefix, first + contourCount[c]) - start);
+    rank[i] = atomic_inc(&bucketCounts[bucketOf(GRID_PASS, cellOf(cellSize, motion[i].xy))]);
+}
+
+// Counting sort, second half: bucketStart is the exclusive scan of the counts, and every vertex
+// goes to its bucket's start plus its rank; the rank is replaced by that slot. The order within a
+// bucket follows the atomics and may differ from run to run, but nearestOtherPart is a minimum
+// over the bucket's entries, which no order changes, so no result depends on it. An entry is
+// (x, y, arc, contour) as bits.
+VF_KERNEL void gridScatter(__global const float4 *motion, __global const uint *contourOf, uint n,
+                           __global const float *arc, GRID_ARGS, __global const uint *bucketStart,
+                           __global uint *rankThenSlot, __global uint4 *entries)
+{
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const float2 p = motion[i].xy;
+    const uint slot = bucketStart[bucketOf(GRID_PASS, cellOf(cellSize, p))] + rankThenSlot[i];
+    entries[slot] = (uint4)(as_uint(p.x), as_uint(p.y), as_uint(arc[i]), contourOf[i]);
+    rankThenSlot[i] = slot;
+}
+
+// ProximityGrid::nearestOtherPart for every grid entry: the distance to the nearest vertex of
+// another part within the search radius (the cell size), or a negative value when there is none.
+// Work-items run in bucket order, so neighbouring ones search the same cells, which a CPU device
+// then finds in its caches (in contour order, each vertex's 3×3 cells are mostly cache misses).
+VF_KERNEL void nearestOtherPart(GRID_ARGS, uint n, __global const uint *bucketStart, __global const uint4 *entries,
+                                __global const float *contourLength, __global float *gap)
+{
+    const uint self = get_global_id(0);
+    if (self >= n)
+        return;
+    const uint4 entry = entries[self];
+    const float2 p = (float2)(as_float(entry.x), as_float(entry.y));
+    const float arc = as_float(entry.z), length = contourLength[entry.w];
+    const float radius2 = cellSize * cellSize;
+    float best2 = radius2;
+    const int2 cell = cellOf(cellSize, p);
+    const uint left = columnOf(GRID_PASS, cell.x - 1), right = columnOf(GRID_PASS, cell.x + 1);
+    for (int dy = -1; dy <= 1; ++dy) {
+        // The three cells of a row are adjacent buckets, one run of entries, unless the row wraps
+        // around the torus between them: then two runs.
+        const uint row = rowStart(GRID_PASS, cell.y + dy);
+        const bool wraps = left > right;
+        for (int run = 0; run <= (int)wraps; ++run) {
+            const uint from = row + (run == 0 ? left : 0);
+            const uint to = row + (wraps && run == 0 ? (1u << columnBits) - 1u : right);
+            const uint end = bucketStart[to + 1];
+            // Four entries at a time, branch-free: most candidates are the vertex's own neighbours
+            // along its contour, and a branch per candidate would mispredict. Lanes past the run
+            // read the next entries (the array has slack at the end) and are masked out.
+            for (uint e = bucketStart[from]; e < end; e += 4) {
+                const uint16 q = vload16(0, (__global const uint *)(entries + e));
+                const float4 dx = as_float4(q.s048c) - p.x, dy = as_float4(q.s159d) - p.y;
+                const float4 dist2 = dx * dx + dy * dy;
+                const float4 along = fabs(as_float4(q.s26ae) - arc);
+                const float4 way = fmin(along, length - along);
+                const int4 skip = ((q.s37bf == (uint4)(entry.w)) & (way * way <= 4.0f * dist2)) |
+                                  ((uint4)(e) + (uint4)(0, 1, 2, 3) >= (uint4)(end));
+                const float4 nearest = select(dist2, (float4)(radius2), skip);
+                best2 = fmin(best2, fmin(fmin(nearest.x, nearest.y), fmin(nearest.z, nearest.w)));
+            }
+        }
+    }
+    gap[self] = best2 < radius2 ? sqrt(best2) : -1.0f;
+}
+
+// Menger curvature: 1 / radius of the circle through the three points (SpacingField).
+VF_INLINE float mengerCurvature(float2 before, float2 at, float2 after)
+{
+    const float2 e0 = at - before, e1 = after - at, chord = after - before;
+    const float denominator = sqrt(dot(e0, e0) * dot(e1, e1) * dot(chord, chord));
+    return denominator > 0.0f ? 2.0f * fabs(cross2(e0, e1)) / denominator : 0.0f;
+}
+
+// d_max·exp(−|κ|·Lκ − |ω|/ω_ref)·(1 − exp(−dist/Lp)): eqs. 3, 4, 5 and 7 before smoothing.
+// With `proximity`, the distances come from nearestOtherPart, found through the vertex's grid slot.
+VF_KERNEL void rawSpacing(FLOW_ARGS, float t, __global const float4 *motion, CONTOUR_ARGS, uint n, float maxSpacing,
+                          float curvatureLength, float vorticityScale, float proximityLength, int proximity,
+                          __global const uint *slot, __global const float *gap, __global float *raw)
+{
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const uint c = contourOf[i], first = contourOffset[c], count = contourCount[c];
+    const float2 p = motion[i].xy;
+    const float kappa = mengerCurvature(motion[previousIn(i, first, count)].xy, p, motion[nextIn(i, first, count)].xy);
+    // exp(−a)·exp(−b) of eqs. 4 and 5 as one exponential.
+    float factor = exp(-kappa * curvatureLength - fabs(flowVorticity(FLOW_PASS, p, t)) / vorticityScale);
+    if (proximity) {
+        const float distance = gap[slot[i]];
+        if (distance >= 0.0f)
+            factor *= 1.0f - exp(-distance / proximityLength);
+    }
+    raw[i] = maxSpacing * factor;
+}
+
+// Eq. 6 along the closed contour, then + ε and the clamp to d_max.
+VF_KERNEL void smoothSpacing(__global const float *raw, CONTOUR_ARGS, uint n, __constant float *weights, int radius,
+                             float minSpacing, float maxSpacing, __global float *spacing)
+{
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const uint c = contourOf[i], first = contourOffset[c], count = contourCount[c];
+    float s = 0.0f;
+    if (i >= first + radius && i + radius < first + count) {
+        // Away from the contour's ends (all but 2·radius vertices of it): plain neighbours, which
+        // a CPU device loads as one vector rather than nine wrapped gathers.
+        for (int k = -radius; k <= radius; ++k)
+            s += weights[k + radius] * raw[i + k];
+    } else {
+        for (int k = -radius; k <= radius; ++k)
+            s += weights[k + radius] * raw[stepAlong(i, k, first, count)];
+    }
+    spacing[i] = fmin(maxSpacing, s + minSpacing);
+}

@@ -1,0 +1,120 @@
+// The fluid as the flow of the contour kernels (sim/opencl/FlowBinding.h): the staggered MAC field
+// sampled as sim/FluidSolver.h samples it (MacVelocity::sample and ::vorticity, same clamping and
+// corner differences), in float32, and blended linearly in time between the field at the step's
+// start (u0, v0 at t0) and at its end (u1, v1 at t1) as sim/FluidFlow does, so RK4's mid-step
+// samples (eq. 1) see the flow of that moment. Comes after flow.h.cl; fluid.cl traces through the
+// same helpers. Every helper is force-inlined: PoCL's vectoriser gives up on kernels that call
+// large functions that are not inlined.
+
+#ifndef VF_INLINE
+#define VF_INLINE inline __attribute__((always_inline))
+#endif
+
+// A position on a row-major cols x rows lattice (cols, rows >= 2): the lattice point (i, j) at the
+// low corner of the square holding it and the fractions across (detail::LatticePoint). Everything
+// here is scalar: PoCL's loop vectoriser refuses loops that hold float2 or float4 values.
+typedef struct {
+    int i, j;
+    float fx, fy;
+} MacPoint;
+
+// As detail::locate: positions outside are clamped onto the lattice, NaN to the low end (it fails
+// `0 < g`), so no position, however bad, indexes out of bounds.
+VF_INLINE MacPoint macLocate(int cols, int rows, float gx, float gy)
+{
+    gx = fmin(0.0f < gx ? gx : 0.0f, (float)(cols - 1));
+    gy = fmin(0.0f < gy ? gy : 0.0f, (float)(rows - 1));
+    MacPoint q;
+    q.i = min((int)gx, cols - 2);
+    q.j = min((int)gy, rows - 2);
+    q.fx = gx - (float)q.i;
+    q.fy = gy - (float)q.j;
+    return q;
+}
+
+// Bilinear interpolation across the square at q of the values at its corners.
+VF_INLINE float macBlendCorners(MacPoint q, float low, float right, float down, float diagonal)
+{
+    return (1.0f - q.fy) * ((1.0f - q.fx) * low + q.fx * right)
+         + q.fy * ((1.0f - q.fx) * down + q.fx * diagonal);
+}
+
+VF_INLINE float macBilinear(__global const float* f, int cols, MacPoint q)
+{
+    __global const float* r0 = f + q.j * cols + q.i;
+    __global const float* r1 = r0 + cols;
+    return macBlendCorners(q, r0[0], r0[1], r1[0], r1[1]);
+}
+
+// The velocity at (gx, gy) in cell units (x / hx, y / hy): u lives at (i, j + 1/2), v at
+// (i + 1/2, j).
+VF_INLINE float macSampleU(__global const float* u, int nx, int ny, float gx, float gy)
+{
+    return macBilinear(u, nx + 1, macLocate(nx + 1, ny, gx, gy - 0.5f));
+}
+
+VF_INLINE float macSampleV(__global const float* v, int nx, int ny, float gx, float gy)
+{
+    return macBilinear(v, nx, macLocate(nx, ny + 1, gx - 0.5f, gy));
+}
+
+// As detail::cornerDifferences: v across cell corner (i, j) along x and u across it along y,
+// central around the corner, the nearest interior difference on the canvas edge.
+VF_INLINE float macCornerDv(__global const float* v, int nx, int i, int j)
+{
+    const int a = clamp(i - 1, 0, nx - 2);
+    return v[j * nx + a + 1] - v[j * nx + a];
+}
+
+VF_INLINE float macCornerDu(__global const float* u, int nx, int ny, int i, int j)
+{
+    const int b = clamp(j - 1, 0, ny - 2);
+    return u[(b + 1) * (nx + 1) + i] - u[b * (nx + 1) + i];
+}
+
+// dv/dx - du/dy, bilinear from the cell corners (MacVelocity::vorticity).
+VF_INLINE float macVorticity(__global const float* u, __global const float* v, int nx, int ny,
+                             float hx, float hy, float2 p)
+{
+    const MacPoint q = macLocate(nx + 1, ny + 1, p.x / hx, p.y / hy);
+    const float dv = macBlendCorners(q, macCornerDv(v, nx, q.i, q.j),
+                                     macCornerDv(v, nx, q.i + 1, q.j),
+                                     macCornerDv(v, nx, q.i, q.j + 1),
+                                     macCornerDv(v, nx, q.i + 1, q.j + 1));
+    const float du = macBlendCorners(q, macCornerDu(u, nx, ny, q.i, q.j),
+                                     macCornerDu(u, nx, ny, q.i + 1, q.j),
+                                     macCornerDu(u, nx, ny, q.i, q.j + 1),
+                                     macCornerDu(u, nx, ny, q.i + 1, q.j + 1));
+    return dv / hx - du / hy;
+}
+
+// How far t is from t0 to t1, clamped to [0, 1]; 1 (the end field) when the span is empty, as
+// FluidFlow::blend.
+VF_INLINE float macBlend(float t0, float t1, float t)
+{
+    const float span = t1 - t0;
+    return span > 0.0f ? clamp((t - t0) / span, 0.0f, 1.0f) : 1.0f;
+}
+
+VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float t)
+{
+    const float s = macBlend(t0, t1, t);
+    const float gx = p.x / hx, gy = p.y / hy;
+    float x = macSampleU(u1, nx, ny, gx, gy), y = macSampleV(v1, nx, ny, gx, gy);
+    if (s != 1.0f) {
+        const float x0 = macSampleU(u0, nx, ny, gx, gy), y0 = macSampleV(v0, nx, ny, gx, gy);
+        x = x0 + s * (x - x0);
+        y = y0 + s * (y - y0);
+    }
+    return (float2)(x, y);
+}
+
+VF_INLINE float flowVorticity(FLOW_PARAMS, float2 p, float t)
+{
+    const float s = macBlend(t0, t1, t);
+    const float end = macVorticity(u1, v1, nx, ny, hx, hy, p);
+    if (s == 1.0f)
+        return end;
+    const float start = macVorticity(u0, v0, nx, ny, hx, hy, p);
+    return start + s * (end - start);
+}

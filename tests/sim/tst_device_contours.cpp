@@ -1,0 +1,523 @@
+// The OpenCL contour tracker (sim/opencl/DeviceContours) against the double-precision reference
+// (sim/ContourTracker): refinement by stream compaction keeps contours closed, ordered and within
+// their spacing; geometry and vertex counts agree with the reference; runs are bit-identical.
+#include "sim/AnalyticFlow.h"
+#include "sim/ContourTracker.h"
+#include "sim/Simulation.h"
+#include "sim/opencl/DeviceContours.h"
+
+#include <glm/geometric.hpp>
+
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+using namespace vf;
+using sim::Polygon;
+using sim::Vec2;
+using sim::opencl::DeviceContours;
+using sim::opencl::FlowBinding;
+
+namespace {
+
+// The test flows, on the host as muparser expressions and on the device as one OpenCL C source,
+// which picks the flow by the binding's `nx` (analytic flows ignore the grid arguments) so that
+// every test shares one program build.
+enum class FlowId { SingleVortex, Rotation, Contraction };
+
+struct TestFlow {
+    const char* u;
+    const char* v;
+};
+
+// LeVeque's single vortex reversed at t = T/2 (T = 8); solid rotation about the canvas centre, one
+// turn per 2 s; a uniform contraction toward the centre (not divergence-free: it deletes vertices).
+TestFlow hostFlow(FlowId id)
+{
+    switch (id) {
+    case FlowId::SingleVortex:
+        return {"-sin(pi*x)^2*sin(2*pi*y)*cos(pi*t/8)", "sin(pi*y)^2*sin(2*pi*x)*cos(pi*t/8)"};
+    case FlowId::Rotation:
+        return {"-pi*(y-0.5)", "pi*(x-0.5)"};
+    case FlowId::Contraction:
+        break;
+    }
+    return {"-(x-0.5)", "-(y-0.5)"};
+}
+
+// sinpi/cospi rather than sin(pi * x): PoCL's scalar sin is several times slower.
+const char* deviceFlowSource = R"CL(
+inline __attribute__((always_inline)) float2 flowVelocity(FLOW_PARAMS, float2 p, float t)
+{
+    if (nx == 0) {
+        const float sx = sinpi(p.x), sy = sinpi(p.y), s = cospi(t / 8.0f);
+        return (float2)(-sx * sx * sinpi(2.0f * p.y) * s, sy * sy * sinpi(2.0f * p.x) * s);
+    }
+    if (nx == 1)
+        return (float2)(-M_PI_F * (p.y - 0.5f), M_PI_F * (p.x - 0.5f));
+    return (float2)(0.5f - p.x, 0.5f - p.y);
+}
+inline __attribute__((always_inline)) float flowVorticity(FLOW_PARAMS, float2 p, float t)
+{
+    if (nx == 0) {
+        const float sx = sinpi(p.x), sy = sinpi(p.y), s = cospi(t / 8.0f);
+        return 2.0f * M_PI_F * s * (sy * sy * cospi(2.0f * p.x) + sx * sx * cospi(2.0f * p.y));
+    }
+    return nx == 1 ? 2.0f * M_PI_F : 0.0f;
+}
+)CL";
+
+sim::TrackingSettings tracking(double maxSpacing, bool adaptive)
+{
+    sim::TrackingSettings s;
+    s.maxSpacing = maxSpacing;
+    s.adaptive = adaptive;
+    s.proximity = adaptive;
+    return s;
+}
+
+// The device tracker and the reference, driven in step with the same substep rule as the
+// backends (ReferenceSimulation::step).
+class Pair {
+public:
+    Pair(sim::opencl::Device& device, FlowId flow, const sim::TrackingSettings& settings, bool withReference = true)
+        : m_flowId(flow)
+        , m_settings(settings)
+        , m_host(hostFlow(flow).u, hostFlow(flow).v)
+        , m_tracker(settings)
+        , m_contours(device, settings, deviceFlowSource)
+        , m_placeholder(device.context(), CL_MEM_READ_ONLY, sizeof(float))
+        , m_withReference(withReference)
+    {
+    }
+
+    void add(int region, const Polygon& p)
+    {
+        m_contours.addContour(region, p);
+        if (m_withReference)
+            m_tracker.addContour(region, p);
+    }
+
+    FlowBinding binding(double t0, double t1) const
+    {
+        FlowBinding b;
+        b.u0 = b.v0 = b.u1 = b.v1 = m_placeholder;
+        b.nx = int(m_flowId);
+        b.t0 = t0;
+        b.t1 = t1;
+        return b;
+    }
+
+    // One step of dt on both; false when the device stopped at max_vertices.
+    bool step(double dt)
+    {
+        bool within = true;
+        const int n = sim::substepCount(m_contours.strainInSpacings(binding(m_time, m_time), m_time, dt), m_settings);
+        for (int k = 0; k < n && within; ++k) {
+            within = m_contours.advect(binding(m_time, m_time + dt / n));
+            m_time += dt / n;
+        }
+        if (m_withReference) {
+            const double strain = m_tracker.strainInSpacings(m_host, m_referenceTime, dt);
+            const int reference = sim::substepCount(strain, m_settings);
+            for (int k = 0; k < reference; ++k) {
+                m_tracker.advect(m_host, m_referenceTime, dt / reference);
+                m_referenceTime += dt / reference;
+            }
+        }
+        return within;
+    }
+
+    // An ink drop as ReferenceSimulation::drop does it, the dropped disc becoming `region`.
+    void drop(Vec2 centre, double radius, int region)
+    {
+        const Polygon dropped = sim::circle(centre, radius, m_settings.maxSpacing);
+        m_contours.growTargetAreasAround(centre, sim::signedArea(dropped));
+        m_contours.drop(centre, radius, binding(m_time, m_time), m_time);
+        if (m_withReference) {
+            m_tracker.growTargetAreasAround(centre, sim::signedArea(dropped));
+            const double r2 = radius * radius;
+            m_tracker.applyMotion(
+                [=](Vec2 p) {
+                    const Vec2 d = p - centre;
+                    const double l2 = glm::dot(d, d);
+                    return l2 == 0.0 ? centre + Vec2(radius, 0.0) : centre + d * std::sqrt(1.0 + r2 / l2);
+                },
+                m_host, m_referenceTime);
+        }
+        add(region, dropped);
+    }
+
+    DeviceContours& device() { return m_contours; }
+    const sim::ContourTracker& reference() const { return m_tracker; }
+
+private:
+    FlowId m_flowId;
+    sim::TrackingSettings m_settings;
+    sim::AnalyticFlow m_host;
+    sim::ContourTracker m_tracker;
+    DeviceContours m_contours;
+    cl::Buffer m_placeholder;
+    bool m_withReference;
+    double m_time = 0.0, m_referenceTime = 0.0;
+};
+
+std::size_t totalVertices(const std::vector<sim::Contour>& contours)
+{
+    std::size_t n = 0;
+    for (const sim::Contour& c : contours)
+        n += c.positions.size();
+    return n;
+}
+
+// Device against reference: the worst Hausdorff distance over corresponding contours, and the
+// relative difference of the vertex counts.
+struct Agreement {
+    double hausdorff = 0.0;
+    double countDifference = 0.0;
+};
+
+Agreement compare(Pair& pair)
+{
+    const std::vector<sim::Contour> device = pair.device().read();
+    const std::vector<sim::Contour>& reference = pair.reference().contours();
+    Agreement a;
+    if (device.size() != reference.size())
+        return {INFINITY, INFINITY};
+    for (std::size_t c = 0; c < device.size(); ++c)
+        a.hausdorff = std::max(a.hausdorff, sim::hausdorffDistance(device[c].positions, reference[c].positions));
+    const double n = double(totalVertices(reference));
+    a.countDifference = std::abs(double(totalVertices(device)) - n) / n;
+    return a;
+}
+
+QString describe(const Agreement& a, const Pair& pair)
+{
+    return QStringLiteral("Hausdorff %1, vertex counts differ by %2% (reference %3)")
+        .arg(a.hausdorff)
+        .arg(100.0 * a.countDifference)
+        .arg(pair.reference().vertexCount());
+}
+
+// What stream compaction must keep: every contour closed with at least 3 vertices, counts adding
+// up, no vertex duplicated, every edge within [d_e/2, d_e] (float rounding aside), and, for
+// contours known to be star-shaped about `centre`, the vertices in angular order, once around.
+QString invariantViolation(const std::vector<sim::Contour>& contours, std::size_t vertexCount,
+                           std::optional<Vec2> centre = std::nullopt)
+{
+    if (totalVertices(contours) != vertexCount)
+        return QStringLiteral("contours hold %1 vertices, the tracker counts %2")
+            .arg(totalVertices(contours))
+            .arg(vertexCount);
+    std::vector<std::pair<double, double>> all;
+    for (std::size_t ci = 0; ci < contours.size(); ++ci) {
+        const sim::Contour& c = contours[ci];
+        const std::size_t n = c.positions.size();
+        if (n < 3 || c.previous.size() != n || c.spacing.size() != n)
+            return QStringLiteral("contour %1 has %2 vertices").arg(ci).arg(n);
+        double turn = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t j = (i + 1) % n;
+            all.emplace_back(c.positions[i].x, c.positions[i].y);
+            const double d = 0.5 * (c.spacing[i] + c.spacing[j]);
+            const double length = glm::distance(c.positions[i], c.positions[j]);
+            if (length > d * (1 + 1e-5) || (n > 3 && length < 0.5 * d * (1 - 1e-5)))
+                return QStringLiteral("contour %1 edge %2 has length %3 for spacing %4")
+                    .arg(ci)
+                    .arg(i)
+                    .arg(length)
+                    .arg(d);
+            if (centre) {
+                const Vec2 a = c.positions[i] - *centre, b = c.positions[j] - *centre;
+                const double step = std::atan2(a.x * b.y - a.y * b.x, glm::dot(a, b));
+                if (step <= 0.0)
+                    return QStringLiteral("contour %1 goes back at vertex %2").arg(ci).arg(i);
+                turn += step;
+            }
+        }
+        if (centre && std::abs(turn - 2.0 * std::numbers::pi) > 1e-6)
+            return QStringLiteral("contour %1 turns %2 around the centre").arg(ci).arg(turn);
+    }
+    std::sort(all.begin(), all.end());
+    if (std::adjacent_find(all.begin(), all.end()) != all.end())
+        return QStringLiteral("a vertex position appears twice");
+    return {};
+}
+
+std::size_t crossings(const std::vector<sim::Contour>& contours)
+{
+    std::vector<const Polygon*> all;
+    for (const sim::Contour& c : contours)
+        all.push_back(&c.positions);
+    return sim::countCrossings(all);
+}
+
+// Zalesak's slotted disk (as tst_tracking): radius 0.15 at (0.5, 0.75), a slot 0.05 wide.
+Polygon slottedDisk(double spacing)
+{
+    const Vec2 centre(0.5, 0.75);
+    const double radius = 0.15, halfWidth = 0.025, slotTop = 0.9 - 0.25;
+    const double side = std::asin(halfWidth / radius);
+    const double from = std::numbers::pi / 2 + side, to = 2.5 * std::numbers::pi - side;
+    const int arcSteps = int(std::ceil((to - from) * radius / spacing));
+    Polygon disk;
+    for (int i = 0; i <= arcSteps; ++i) {
+        const double a = from + (to - from) * i / arcSteps;
+        disk.push_back(centre + radius * Vec2(std::cos(a), std::sin(a)));
+    }
+    disk.push_back({0.5 + halfWidth, slotTop});
+    disk.push_back({0.5 - halfWidth, slotTop});
+    return sim::resample(disk, spacing);
+}
+
+double area(const std::vector<sim::Contour>& contours)
+{
+    double a = 0.0;
+    for (const sim::Contour& c : contours)
+        a += sim::signedArea(c.positions);
+    return a;
+}
+
+} // namespace
+
+class TestDeviceContours : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+
+    void bytesPerVertexWithinBudget();
+    void compactionKeepsRingsOrdered();
+    void stretchAndReturnKeepsContoursValid();
+
+    void rotationMatchesReference_data();
+    void rotationMatchesReference();
+    void singleVortexMatchesReference();
+    void dropMatchesReference();
+
+    void singleVortexReturns_data();
+    void singleVortexReturns();
+
+    void runsAreBitIdentical();
+    void maxVerticesStopsCleanly();
+    void asynchronousReadIsDoubleBuffered();
+
+private:
+    std::optional<sim::opencl::Device> m_device;
+};
+
+void TestDeviceContours::initTestCase()
+{
+    try {
+        m_device.emplace(sim::opencl::Device::open());
+    } catch (const sim::opencl::DeviceError& e) {
+        QSKIP(qPrintable(QStringLiteral("no OpenCL device: %1").arg(e.what())));
+    }
+    qInfo() << "device" << m_device->name().c_str();
+}
+
+void TestDeviceContours::bytesPerVertexWithinBudget()
+{
+    QVERIFY(DeviceContours::bytesPerVertex() <= 64);
+}
+
+void TestDeviceContours::compactionKeepsRingsOrdered()
+{
+    // Heavy insertion, then heavy deletion, on contours whose order is known: rings around one
+    // centre. A drop there pushes every point radially (angles kept) and stretches the inner ring
+    // twentyfold; a contraction toward the centre then shrinks all of them twelvefold. At every
+    // step each ring must go once around the centre in strictly increasing angle. Uniform
+    // spacing, so that the vertex count follows the perimeter (the proximity term would refine
+    // the rings ever more as they close up).
+    const Vec2 centre(0.5, 0.5);
+    Pair pair(*m_device, FlowId::Contraction, tracking(1.0 / 256, false), false);
+    for (int k = 1; k <= 3; ++k)
+        pair.add(k - 1, sim::circle(centre, 0.01 * k, 1.0 / 256));
+    const std::size_t before = pair.device().vertexCount();
+    pair.drop(centre, 0.2, 3);
+    QString violation = invariantViolation(pair.device().read(), pair.device().vertexCount(), centre);
+    QVERIFY2(violation.isEmpty(), qPrintable("after the drop: " + violation));
+    const std::size_t afterDrop = pair.device().vertexCount();
+    QVERIFY2(afterDrop > 4 * before, qPrintable(QStringLiteral("%1 → %2 vertices").arg(before).arg(afterDrop)));
+    for (int step = 0; step < 50; ++step) {
+        pair.step(0.05);
+        violation = invariantViolation(pair.device().read(), pair.device().vertexCount(), centre);
+        QVERIFY2(violation.isEmpty(), qPrintable(QStringLiteral("step %1: ").arg(step) + violation));
+    }
+    qInfo() << "vertices: rings" << before << "after the drop" << afterDrop << "after contracting"
+            << pair.device().vertexCount();
+    QVERIFY(pair.device().vertexCount() < afterDrop / 4);
+}
+
+void TestDeviceContours::stretchAndReturnKeepsContoursValid()
+{
+    // The time-reversed vortex stretches a circle into a long spiral and winds it back: thousands
+    // of insertions, then as many deletions, with adaptive spacing and proximity.
+    Pair pair(*m_device, FlowId::SingleVortex, tracking(1.0 / 128, true), false);
+    pair.add(0, sim::circle({0.5, 0.75}, 0.15, 1.0 / 128));
+    pair.add(1, sim::circle({0.5, 0.3}, 0.1, 1.0 / 128));
+    std::size_t most = 0;
+    for (int step = 0; step < 400; ++step) {
+        pair.step(0.02);
+        const auto contours = pair.device().read();
+        most = std::max(most, pair.device().vertexCount());
+        const QString violation = invariantViolation(contours, pair.device().vertexCount());
+        QVERIFY2(violation.isEmpty(), qPrintable(QStringLiteral("step %1: ").arg(step) + violation));
+        QCOMPARE(crossings(contours), std::size_t(0));
+    }
+    qInfo() << "vertices: most" << most << "at the end" << pair.device().vertexCount();
+}
+
+void TestDeviceContours::rotationMatchesReference_data()
+{
+    QTest::addColumn<bool>("adaptive");
+    QTest::newRow("uniform") << false;
+    QTest::newRow("adaptive") << true;
+}
+
+void TestDeviceContours::rotationMatchesReference()
+{
+    QFETCH(bool, adaptive);
+    Pair pair(*m_device, FlowId::Rotation, tracking(1.0 / 256, adaptive));
+    const Polygon start = slottedDisk(1.0 / 256);
+    pair.add(0, start);
+    for (int step = 0; step < 200; ++step)
+        pair.step(0.01);
+    const Agreement a = compare(pair);
+    const double returned = sim::hausdorffDistance(pair.device().read()[0].positions, start);
+    qInfo() << qPrintable(describe(a, pair)) << "| return after one turn" << returned;
+    QVERIFY2(a.hausdorff <= 1e-3 && a.countDifference <= 0.02, qPrintable(describe(a, pair)));
+    QVERIFY2(returned < 0.002, qPrintable(QStringLiteral("return %1").arg(returned)));
+}
+
+void TestDeviceContours::singleVortexMatchesReference()
+{
+    Pair pair(*m_device, FlowId::SingleVortex, tracking(1.0 / 128, true));
+    pair.add(0, sim::circle({0.5, 0.75}, 0.15, 1.0 / 128));
+    for (int step = 1; step <= 400; ++step) {
+        pair.step(0.02);
+        if (step == 100 || step == 400) {
+            const Agreement a = compare(pair);
+            qInfo() << "t =" << step * 0.02 << qPrintable(describe(a, pair));
+            QVERIFY2(a.hausdorff <= 1e-3 && a.countDifference <= 0.02, qPrintable(describe(a, pair)));
+        }
+    }
+}
+
+void TestDeviceContours::dropMatchesReference()
+{
+    // Drops on existing ink (the flow enters only through the vorticity term of the spacing): one
+    // drop inside a circle, which becomes a ring, one between two others. Refinement bisects
+    // edges stretched up to tenfold, as the reference does.
+    Pair pair(*m_device, FlowId::SingleVortex, tracking(1.0 / 256, true));
+    pair.add(0, sim::circle({0.5, 0.5}, 0.15, 1.0 / 256));
+    pair.add(1, sim::circle({0.75, 0.7}, 0.05, 1.0 / 256));
+    pair.add(2, sim::circle({0.3, 0.75}, 0.08, 1.0 / 256));
+    pair.drop({0.5, 0.55}, 0.1, 3);
+    pair.drop({0.6, 0.75}, 0.07, 4);
+    const Agreement a = compare(pair);
+    qInfo() << qPrintable(describe(a, pair));
+    QVERIFY2(a.hausdorff <= 1e-3 && a.countDifference <= 0.02, qPrintable(describe(a, pair)));
+    const auto device = pair.device().read();
+    const auto& reference = pair.reference().contours();
+    for (std::size_t c = 0; c < device.size(); ++c)
+        QVERIFY2(std::abs(device[c].targetArea - reference[c].targetArea) <= 1e-12,
+                 qPrintable(QStringLiteral("contour %1 target %2 vs %3")
+                                .arg(c)
+                                .arg(device[c].targetArea)
+                                .arg(reference[c].targetArea)));
+    QCOMPARE(crossings(device), std::size_t(0));
+}
+
+void TestDeviceContours::singleVortexReturns_data()
+{
+    QTest::addColumn<bool>("areaCorrection");
+    QTest::addColumn<double>("areaTolerance");
+    QTest::newRow("plain") << false << 1e-3;
+    QTest::newRow("area-correction") << true << 1e-5;
+}
+
+void TestDeviceContours::singleVortexReturns()
+{
+    // DESIGN §4: circle r = 0.15 at (0.5, 0.75), period 8, uniform spacing 1/256, in float32.
+    QFETCH(bool, areaCorrection);
+    QFETCH(double, areaTolerance);
+    auto settings = tracking(1.0 / 256, false);
+    settings.areaCorrection = areaCorrection;
+    Pair pair(*m_device, FlowId::SingleVortex, settings, false);
+    const Polygon start = sim::circle({0.5, 0.75}, 0.15, 1.0 / 256);
+    pair.add(0, start);
+    const double startArea = sim::signedArea(start);
+    double worstArea = 0.0;
+    for (int step = 0; step < 800; ++step) {
+        pair.step(0.01);
+        worstArea = std::max(worstArea, std::abs(area(pair.device().read()) / startArea - 1.0));
+    }
+    const double shape = sim::hausdorffDistance(pair.device().read()[0].positions, start);
+    qInfo() << "worst relative area error" << worstArea << "shape return" << shape << "vertices"
+            << pair.device().vertexCount();
+    QVERIFY2(worstArea < areaTolerance, qPrintable(QStringLiteral("area error %1").arg(worstArea)));
+    QVERIFY2(shape < 0.002, qPrintable(QStringLiteral("shape return %1").arg(shape)));
+}
+
+void TestDeviceContours::runsAreBitIdentical()
+{
+    auto run = [&] {
+        Pair pair(*m_device, FlowId::SingleVortex, tracking(1.0 / 128, true), false);
+        pair.add(0, sim::circle({0.5, 0.75}, 0.15, 1.0 / 128));
+        pair.add(1, sim::circle({0.5, 0.5}, 0.05, 1.0 / 128));
+        for (int step = 0; step < 100; ++step)
+            pair.step(0.02);
+        pair.drop({0.4, 0.6}, 0.05, 2);
+        return pair.device().read();
+    };
+    const auto first = run(), second = run();
+    QCOMPARE(first.size(), second.size());
+    for (std::size_t c = 0; c < first.size(); ++c) {
+        QVERIFY(first[c].positions == second[c].positions);
+        QVERIFY(first[c].previous == second[c].previous);
+        QVERIFY(first[c].spacing == second[c].spacing);
+    }
+}
+
+void TestDeviceContours::maxVerticesStopsCleanly()
+{
+    auto settings = tracking(1.0 / 256, false);
+    settings.maxVertices = 1000;
+    Pair pair(*m_device, FlowId::SingleVortex, settings, false);
+    pair.add(0, sim::circle({0.5, 0.75}, 0.15, 1.0 / 256));
+    bool stopped = false;
+    for (int step = 0; step < 200 && !stopped; ++step)
+        stopped = !pair.step(0.02);
+    QVERIFY2(stopped, "the vortex should need more than 1000 vertices");
+    QVERIFY(pair.device().vertexCount() <= 1000);
+    const auto contours = pair.device().read();
+    QCOMPARE(totalVertices(contours), pair.device().vertexCount());
+    QCOMPARE(crossings(contours), std::size_t(0));
+}
+
+void TestDeviceContours::asynchronousReadIsDoubleBuffered()
+{
+    Pair pair(*m_device, FlowId::SingleVortex, tracking(1.0 / 128, true), false);
+    pair.add(0, sim::circle({0.5, 0.75}, 0.15, 1.0 / 128));
+    DeviceContours& device = pair.device();
+    QVERIFY(!device.takeRead());
+    pair.step(0.02);
+    const auto first = device.read();
+    device.requestRead();
+    pair.step(0.02);
+    const auto second = device.read();
+    device.requestRead();
+    pair.step(0.02);  // enqueued behind both copies
+    const auto taken = device.takeRead(true);
+    QVERIFY(taken);
+    QVERIFY((*taken)[0].positions == second[0].positions);  // the newest request
+    QVERIFY(!device.takeRead(true));                         // each at most once, the older one superseded
+    QVERIFY(first[0].positions != second[0].positions);
+}
+
+QTEST_APPLESS_MAIN(TestDeviceContours)
+#include "tst_device_contours.moc"

@@ -1,0 +1,526 @@
+// Tests of the OpenCL fluid solver (sim/opencl/DeviceFluid) against the reference FluidSolver:
+// agreement after strokes, projection, walls, viscosity, the pen, determinism and snapshots, the
+// fields binding() hands to the contour kernels and their sampling in flow_fluid.cl, bad input.
+// Skipped, with the reason, when no OpenCL device can be opened.
+#include "sim/FluidSolver.h"
+#include "sim/opencl/DeviceFluid.h"
+#include "sim/opencl/KernelSources.h"
+#include "sim/opencl/Launch.h"
+
+#include <glm/geometric.hpp>
+
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace vf::sim;
+using vf::sim::opencl::Device;
+using vf::sim::opencl::DeviceError;
+using vf::sim::opencl::DeviceFluid;
+using vf::sim::opencl::FlowBinding;
+
+Q_DECLARE_METATYPE(vf::sim::Advection)
+Q_DECLARE_METATYPE(vf::sim::FluidSettings)
+
+namespace {
+
+constexpr double kDt = 0.002;  // the scene default time step
+// The projection's bound relative to the divergence scale S (DeviceFluid.cpp): the solver stops at
+// 1e-6 S; float32 rounding of the stored field and pressure leaves up to 2.2e-6 S at 256^2
+// (4.5e-6 S at 512^2).
+constexpr double kDivergenceBound = 1e-5;
+
+FluidSettings settings(int nx, int ny, double width, double height, double viscosity,
+                       Advection advection = Advection::MacCormack)
+{
+    FluidSettings s;
+    s.nx = nx;
+    s.ny = ny;
+    s.width = width;
+    s.height = height;
+    s.viscosity = viscosity;
+    s.advection = advection;
+    return s;
+}
+
+// A pen circling the centre of the canvas, one segment per call (as in tst_fluid.cpp).
+template <class Fluid>
+void stir(Fluid& fluid, int segment)
+{
+    const FluidSettings& s = fluid.settings();
+    const Vec2 center{0.5 * s.width, 0.5 * s.height};
+    const double radius = 0.3 * std::min(s.width, s.height);
+    const auto at = [&](int k) {
+        const double a = 0.4 * k;
+        return center + radius * Vec2{std::cos(a), std::sin(a)};
+    };
+    fluid.addStylus(at(segment), at(segment + 1), 0.05 * std::min(s.width, s.height), 5 * kDt);
+}
+
+// Stirred for the first 15 steps, then left to flow.
+template <class Fluid>
+void run(Fluid& fluid, int first, int count)
+{
+    for (int k = first; k < first + count; ++k) {
+        if (k < 15)
+            stir(fluid, k);
+        fluid.step(kDt);
+    }
+}
+
+// The reference solver holding the device's field: its diagnostics, in double.
+FluidSolver onReference(const DeviceFluid& fluid)
+{
+    FluidSolver probe(fluid.settings());
+    probe.setVelocity(fluid.readVelocity());
+    return probe;
+}
+
+double maxComponent(const MacVelocity& m)
+{
+    return std::max(maxAbs(m.u), maxAbs(m.v));
+}
+
+double maxDifference(const MacVelocity& a, const MacVelocity& b)
+{
+    double d = 0.0;
+    for (std::size_t k = 0; k < a.u.size(); ++k)
+        d = std::max(d, std::abs(a.u[k] - b.u[k]));
+    for (std::size_t k = 0; k < a.v.size(); ++k)
+        d = std::max(d, std::abs(a.v[k] - b.v[k]));
+    return d;
+}
+
+// S of DeviceFluid.cpp: the largest sum of the magnitudes of the terms of a cell's divergence.
+double divergenceScale(const MacVelocity& m)
+{
+    double s = 0.0;
+    for (int j = 0; j < m.ny; ++j)
+        for (int i = 0; i < m.nx; ++i) {
+            const double* u = m.u.data() + std::size_t(j) * (m.nx + 1) + i;
+            const double* v = m.v.data() + std::size_t(j) * m.nx + i;
+            s = std::max(s, (std::abs(u[0]) + std::abs(u[1])) / m.hx
+                                + (std::abs(v[0]) + std::abs(v[m.nx])) / m.hy);
+        }
+    return s;
+}
+
+bool isZero(const std::vector<double>& values)
+{
+    return std::all_of(values.begin(), values.end(), [](double x) { return x == 0.0; });
+}
+
+std::vector<double> readBuffer(Device& device, const cl::Buffer& buffer, std::size_t count)
+{
+    std::vector<float> values(count);
+    device.queue().enqueueReadBuffer(buffer, CL_TRUE, 0, count * sizeof(float), values.data());
+    return {values.begin(), values.end()};
+}
+
+// A smooth, divergent field: enough structure for sampling and vorticity to be checked.
+MacVelocity waves(const FluidSettings& s, double phase)
+{
+    MacVelocity m = FluidSolver(s).velocity();
+    for (int j = 0; j < m.ny; ++j)
+        for (int i = 0; i <= m.nx; ++i)
+            m.u[std::size_t(j) * (m.nx + 1) + i] =
+                std::sin(3.0 * i * m.hx + phase) * std::cos(2.0 * (j + 0.5) * m.hy);
+    for (int j = 0; j <= m.ny; ++j)
+        for (int i = 0; i < m.nx; ++i)
+            m.v[std::size_t(j) * m.nx + i] =
+                std::cos(2.5 * (i + 0.5) * m.hx - phase) * std::sin(4.0 * j * m.hy);
+    return m;
+}
+
+struct FlowSample {
+    Vec2 velocity;
+    double vorticity;
+};
+
+// The flow FluidFlow gives at (p, t) between the fields `start` at t0 and `end` at t1.
+FlowSample blended(const MacVelocity& start, const MacVelocity& end, double t0, double t1, Vec2 p,
+                   double t)
+{
+    const double span = t1 - t0;
+    const double s = span > 0.0 ? std::clamp((t - t0) / span, 0.0, 1.0) : 1.0;
+    return {start.sample(p) + s * (end.sample(p) - start.sample(p)),
+            start.vorticity(p) + s * (end.vorticity(p) - start.vorticity(p))};
+}
+
+} // namespace
+
+class TestDeviceFluid : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void agreesWithReference_data();
+    void agreesWithReference();
+    void divergenceFreeAfterStylus_data();
+    void divergenceFreeAfterStylus();
+    void stillFluidStaysStill_data();
+    void stillFluidStaysStill();
+    void stylusMovesFluidInPenDirection_data();
+    void stylusMovesFluidInPenDirection();
+    void viscosityDampsEnergy_data();
+    void viscosityDampsEnergy();
+    void highViscosityStopsRightAfterStroke();
+    void degenerateStrokesDoNothing();
+    void deterministicAndSnapshotsReplay();
+    void bindingHoldsStepStartAndEnd();
+    void flowSamplingMatchesReference();
+    void badInputThrows();
+
+private:
+    std::vector<double> sampleOnDevice(const FlowBinding& flow, const std::vector<float>& points);
+
+    std::optional<Device> m_device;
+};
+
+void TestDeviceFluid::initTestCase()
+{
+    try {
+        m_device = Device::open();
+    } catch (const DeviceError& e) {
+        QSKIP(qPrintable(QString("no OpenCL device: %1").arg(e.what())));
+    }
+}
+
+void TestDeviceFluid::agreesWithReference_data()
+{
+    QTest::addColumn<FluidSettings>("settings");
+    QTest::addColumn<int>("steps");
+    QTest::newRow("64x64, MacCormack") << settings(64, 64, 1.0, 1.0, 5e-4) << 50;
+    QTest::newRow("64x64, semi-Lagrangian")
+        << settings(64, 64, 1.0, 1.0, 5e-4, Advection::SemiLagrangian) << 50;
+    QTest::newRow("64x64, inviscid") << settings(64, 64, 1.0, 1.0, 0.0) << 50;
+    // The motion dies within a few steps of the last stroke: compared right after it.
+    QTest::newRow("64x64, nu = 10") << settings(64, 64, 1.0, 1.0, 10.0) << 15;
+    QTest::newRow("96x48 on 2x1, MacCormack") << settings(96, 48, 2.0, 1.0, 5e-4) << 50;
+    QTest::newRow("96x48 on 2x1, semi-Lagrangian")
+        << settings(96, 48, 2.0, 1.0, 5e-4, Advection::SemiLagrangian) << 50;
+    QTest::newRow("128x128, nu = 0.05") << settings(128, 128, 1.0, 1.0, 0.05) << 50;
+}
+
+// Strokes in the first 15 steps: the float32 device and the double reference stay within 1e-3 of
+// the largest velocity of each other (measured: a few 1e-6).
+void TestDeviceFluid::agreesWithReference()
+{
+    QFETCH(FluidSettings, settings);
+    QFETCH(int, steps);
+    DeviceFluid device(*m_device, settings);
+    FluidSolver reference(settings);
+    run(device, 0, steps);
+    run(reference, 0, steps);
+    const MacVelocity expected = reference.velocity();
+    const double error = maxDifference(device.readVelocity(), expected) / maxComponent(expected);
+    QVERIFY(maxComponent(expected) > 0.1);
+    QVERIFY2(error < 1e-3, qPrintable(QString("max difference %1 of max |u|").arg(error)));
+}
+
+void TestDeviceFluid::divergenceFreeAfterStylus_data()
+{
+    QTest::addColumn<FluidSettings>("settings");
+    QTest::newRow("64x64 on 1x1") << settings(64, 64, 1.0, 1.0, 5e-4);
+    QTest::newRow("96x48 on 2x1") << settings(96, 48, 2.0, 1.0, 5e-4);
+    QTest::newRow("40x100 on 1x3") << settings(40, 100, 1.0, 3.0, 5e-4);
+    QTest::newRow("64x16 on 1x1, thin cells") << settings(64, 16, 1.0, 1.0, 5e-4);
+    QTest::newRow("256x256, inviscid") << settings(256, 256, 1.0, 1.0, 0.0);
+    FluidSettings loose = settings(64, 64, 1.0, 1.0, 5e-4);
+    loose.pressureTolerance = 1e-2;
+    QTest::newRow("64x64, loose tolerance") << loose;
+}
+
+// After every projection max |div u| <= max(pressure tolerance, kDivergenceBound * S).
+void TestDeviceFluid::divergenceFreeAfterStylus()
+{
+    QFETCH(FluidSettings, settings);
+    DeviceFluid fluid(*m_device, settings);
+    for (int k = 0; k < 15; ++k) {
+        stir(fluid, k);
+        fluid.step(kDt);
+        const MacVelocity m = fluid.readVelocity();
+        const double bound =
+            std::max(settings.pressureTolerance, kDivergenceBound * divergenceScale(m));
+        QVERIFY2(fluid.maxDivergence() <= bound,
+                 qPrintable(QString("step %1: max |div u| = %2, bound %3")
+                                .arg(k)
+                                .arg(fluid.maxDivergence())
+                                .arg(bound)));
+    }
+    QVERIFY(onReference(fluid).maxSpeed() > 0.1);
+}
+
+void TestDeviceFluid::stillFluidStaysStill_data()
+{
+    QTest::addColumn<Advection>("advection");
+    QTest::addColumn<double>("viscosity");
+    QTest::newRow("semi-Lagrangian, inviscid") << Advection::SemiLagrangian << 0.0;
+    QTest::newRow("MacCormack, inviscid") << Advection::MacCormack << 0.0;
+    QTest::newRow("MacCormack, viscous") << Advection::MacCormack << 0.05;
+}
+
+void TestDeviceFluid::stillFluidStaysStill()
+{
+    QFETCH(Advection, advection);
+    QFETCH(double, viscosity);
+    DeviceFluid fluid(*m_device, settings(36, 24, 1.5, 1.0, viscosity, advection));
+    for (int k = 0; k < 100; ++k)
+        fluid.step(kDt);
+    const MacVelocity m = fluid.readVelocity();
+    QVERIFY(isZero(m.u));
+    QVERIFY(isZero(m.v));
+}
+
+void TestDeviceFluid::stylusMovesFluidInPenDirection_data()
+{
+    QTest::addColumn<Vec2>("direction");
+    QTest::newRow("right") << Vec2{1.0, 0.0};
+    QTest::newRow("left") << Vec2{-1.0, 0.0};
+    QTest::newRow("up") << Vec2{0.0, -1.0};
+    QTest::newRow("down") << Vec2{0.0, 1.0};
+    QTest::newRow("diagonal") << glm::normalize(Vec2{1.0, 1.0});
+}
+
+void TestDeviceFluid::stylusMovesFluidInPenDirection()
+{
+    QFETCH(Vec2, direction);
+    DeviceFluid fluid(*m_device, settings(96, 48, 2.0, 1.0, 5e-4));
+    const Vec2 center{1.0, 0.5};
+    fluid.addStylus(center - 0.1 * direction, center + 0.1 * direction, 0.05, 0.1);  // 2 units/s
+    fluid.step(kDt);
+    const Vec2 velocity = fluid.readVelocity().sample(center);
+    const double along = glm::dot(velocity, direction);
+    const double across = std::abs(velocity.x * direction.y - velocity.y * direction.x);
+    QVERIFY2(along > 0.05, qPrintable(QString("along the pen: %1").arg(along)));
+    QVERIFY2(across < 0.01 * along, qPrintable(QString("across the pen: %1").arg(across)));
+}
+
+void TestDeviceFluid::viscosityDampsEnergy_data()
+{
+    QTest::addColumn<Advection>("advection");
+    QTest::addColumn<double>("viscosity");
+    for (const double viscosity : {5e-4, 0.05, 10.0}) {
+        QTest::addRow("MacCormack, nu = %g", viscosity) << Advection::MacCormack << viscosity;
+        QTest::addRow("semi-Lagrangian, nu = %g", viscosity)
+            << Advection::SemiLagrangian << viscosity;
+    }
+}
+
+void TestDeviceFluid::viscosityDampsEnergy()
+{
+    QFETCH(Advection, advection);
+    QFETCH(double, viscosity);
+    DeviceFluid fluid(*m_device, settings(32, 32, 1.0, 1.0, viscosity, advection));
+    for (int k = 0; k < 6; ++k) {
+        stir(fluid, k);
+        fluid.step(kDt);
+    }
+    double energy = onReference(fluid).kineticEnergy();
+    QVERIFY(energy > 0.0);
+    for (int k = 0; k < 40; ++k) {
+        fluid.step(kDt);
+        const double next = onReference(fluid).kineticEnergy();
+        QVERIFY2(next < energy,
+                 qPrintable(QString("step %1: %2 -> %3").arg(k).arg(energy).arg(next)));
+        energy = next;
+    }
+}
+
+// "Shape design" (paper §5.2): at nu = 10 the motion dies right after the stroke (the reasoning
+// is in tst_fluid.cpp).
+void TestDeviceFluid::highViscosityStopsRightAfterStroke()
+{
+    DeviceFluid fluid(*m_device, settings(64, 64, 1.0, 1.0, 10.0));
+    fluid.addStylus({0.2, 0.5}, {0.8, 0.5}, 0.05, 0.1);
+    fluid.step(kDt);
+    const double peak = onReference(fluid).maxSpeed();
+    QVERIFY(peak > 0.0);
+    for (int k = 0; k < 8; ++k)
+        fluid.step(kDt);
+    const double left = onReference(fluid).maxSpeed();
+    QVERIFY2(left < 0.01 * peak, qPrintable(QString("%1 of the peak speed left").arg(left / peak)));
+}
+
+void TestDeviceFluid::degenerateStrokesDoNothing()
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    DeviceFluid fluid(*m_device, settings(32, 32, 1.0, 1.0, 5e-4));
+    fluid.addStylus({0.2, 0.5}, {0.8, 0.5}, 0.05, 0.0);  // a jump
+    fluid.addStylus({0.2, 0.5}, {0.8, 0.5}, 0.05, -1.0);
+    fluid.addStylus({0.2, 0.5}, {0.8, 0.5}, 0.05, nan);
+    fluid.addStylus({0.2, 0.5}, {0.8, 0.5}, nan, 0.1);
+    fluid.addStylus({0.2, 0.5}, {0.8, 0.5}, 0.0, 0.1);
+    fluid.addStylus({nan, 0.5}, {0.8, 0.5}, 0.05, 0.1);
+    fluid.addStylus({0.2, 0.5}, {inf, 0.5}, 0.05, 0.1);
+    fluid.addStylus({0.2, 0.5}, {0.8, 0.5}, 0.05, 1e-320);  // pen velocity overflows
+    fluid.step(kDt);
+    // Far outside the canvas, beyond float32: touches nothing either, and is safe.
+    fluid.addStylus({1e300, -1e300}, {2e300, -1e300}, 1e299, 1.0);
+    fluid.addStylus({1e30, 0.5}, {2e30, 0.5}, 0.05, 1e30);
+    fluid.step(kDt);
+    const MacVelocity m = fluid.readVelocity();
+    QVERIFY(isZero(m.u));
+    QVERIFY(isZero(m.v));
+}
+
+void TestDeviceFluid::deterministicAndSnapshotsReplay()
+{
+    const FluidSettings s = settings(96, 48, 2.0, 1.0, 5e-3);
+    DeviceFluid a(*m_device, s), b(*m_device, s);
+    run(a, 0, 10);
+    run(b, 0, 10);
+    const MacVelocity snapshot = a.readVelocity();
+    QVERIFY(snapshot.u == b.readVelocity().u && snapshot.v == b.readVelocity().v);
+
+    // A snapshot restored into a fresh solver and into the running one replays bit for bit.
+    DeviceFluid restored(*m_device, s);
+    restored.writeVelocity(snapshot);
+    a.writeVelocity(snapshot);
+    QVERIFY(restored.readVelocity().u == snapshot.u);
+    run(a, 10, 10);
+    run(restored, 10, 10);
+    const MacVelocity replayed = a.readVelocity();
+    QVERIFY(replayed.u == restored.readVelocity().u && replayed.v == restored.readVelocity().v);
+    QVERIFY(!isZero(replayed.u));
+}
+
+// The contour kernels get the field of the step's start as (u0, v0) and of its end as (u1, v1).
+void TestDeviceFluid::bindingHoldsStepStartAndEnd()
+{
+    const FluidSettings s = settings(24, 16, 1.5, 1.0, 5e-4);
+    DeviceFluid fluid(*m_device, s);
+    fluid.writeVelocity(waves(s, 0.3));
+    const MacVelocity before = fluid.readVelocity();
+    const auto read = [&](const cl::Buffer& buffer, std::size_t count) {
+        return readBuffer(*m_device, buffer, count);
+    };
+    FlowBinding b = fluid.binding(0.0, 0.0);
+    QCOMPARE(read(b.u0, before.u.size()), before.u);
+    QCOMPARE(read(b.v1, before.v.size()), before.v);
+
+    stir(fluid, 0);
+    fluid.step(kDt);
+    b = fluid.binding(1.0, 1.0 + kDt);
+    const MacVelocity after = fluid.readVelocity();
+    QVERIFY(after.u != before.u);
+    QCOMPARE(read(b.u0, before.u.size()), before.u);
+    QCOMPARE(read(b.v0, before.v.size()), before.v);
+    QCOMPARE(read(b.u1, after.u.size()), after.u);
+    QCOMPARE(read(b.v1, after.v.size()), after.v);
+    QCOMPARE(b.nx, s.nx);
+    QCOMPARE(b.ny, s.ny);
+    QCOMPARE(b.hx, float(s.width / s.nx));
+    QCOMPARE(b.t0, 1.0);
+    QCOMPARE(b.t1, 1.0 + kDt);
+}
+
+// flowVelocity and flowVorticity of flow_fluid.cl against MacVelocity::sample and ::vorticity of
+// the same float32 fields, blended in time as FluidFlow blends them: everywhere on the canvas,
+// outside it (clamped) and at times before, inside and after the step, and with t1 == t0 (the end
+// field alone).
+void TestDeviceFluid::flowSamplingMatchesReference()
+{
+    const FluidSettings s = settings(20, 12, 2.0, 0.75, 0.0);
+    DeviceFluid fluid(*m_device, s);
+    fluid.writeVelocity(waves(s, 0.0));
+    const MacVelocity start = fluid.readVelocity();
+    fluid.addStylus({0.5, 0.3}, {1.5, 0.4}, 0.2, 0.2);
+    fluid.step(kDt);
+    const MacVelocity end = fluid.readVelocity();
+    const double speed = std::max(maxComponent(start), maxComponent(end));
+
+    std::vector<float> points;  // x, y, t
+    const double t0 = 0.25;
+    for (int k = 0; k < 600; ++k) {
+        const double x = -0.2 + 2.4 * (k % 29) / 28.0, y = -0.1 + 0.95 * (k % 31) / 30.0;
+        points.insert(points.end(), {float(x), float(y), float(t0 + 0.05 * ((k % 7) - 1))});
+    }
+    for (const double t1 : {0.45, t0}) {
+        const std::vector<double> got = sampleOnDevice(fluid.binding(t0, t1), points);
+        for (std::size_t k = 0; k < points.size(); k += 3) {
+            const Vec2 p{points[k], points[k + 1]};
+            const FlowSample expected = blended(start, end, t0, t1, p, points[k + 2]);
+            const double velocityError = std::max(std::abs(got[k] - expected.velocity.x),
+                                                  std::abs(got[k + 1] - expected.velocity.y));
+            const double vorticityError = std::abs(got[k + 2] - expected.vorticity);
+            QVERIFY2(velocityError < 1e-5 * speed && vorticityError < 1e-5 * speed / start.hx,
+                     qPrintable(QString("at (%1, %2, t = %3), step [%4, %5]: velocity off by %6, "
+                                        "vorticity by %7")
+                                    .arg(p.x)
+                                    .arg(p.y)
+                                    .arg(points[k + 2])
+                                    .arg(t0)
+                                    .arg(t1)
+                                    .arg(velocityError)
+                                    .arg(vorticityError)));
+        }
+    }
+}
+
+// The flow and its vorticity at each (x, y, t) of `points`, sampled by flow_fluid.cl as the contour
+// kernels sample it.
+std::vector<double> TestDeviceFluid::sampleOnDevice(const FlowBinding& flow,
+                                                    const std::vector<float>& points)
+{
+    const std::string source = opencl::joinedKernelSources({"flow.h.cl", "flow_fluid.cl"}) + R"(
+        __kernel void sample(FLOW_ARGS, __global const float* points, int n, __global float* out)
+        {
+            const int k = 3 * get_global_id(0);
+            if (k >= 3 * n)
+                return;
+            const float2 p = (float2)(points[k], points[k + 1]);
+            const float2 velocity = flowVelocity(FLOW_PASS, p, points[k + 2]);
+            out[k] = velocity.x;
+            out[k + 1] = velocity.y;
+            out[k + 2] = flowVorticity(FLOW_PASS, p, points[k + 2]);
+        })";
+    cl::Kernel sample(m_device->build(source, "the sampling test kernel"), "sample");
+    const std::size_t bytes = points.size() * sizeof(float);
+    cl::Buffer in(m_device->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
+                  const_cast<float*>(points.data()));
+    cl::Buffer out(m_device->context(), CL_MEM_WRITE_ONLY, bytes);
+    const int n = int(points.size() / 3);
+    opencl::launch(m_device->queue(), sample, n, flow, in, n, out);
+    return readBuffer(*m_device, out, points.size());
+}
+
+void TestDeviceFluid::badInputThrows()
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const auto throwsFor = [&](auto change) {
+        FluidSettings s;
+        change(s);
+        try {
+            DeviceFluid fluid(*m_device, s);
+        } catch (const std::invalid_argument& e) {
+            return QString(e.what()).startsWith("FluidSettings: ");
+        }
+        return false;
+    };
+    QVERIFY(throwsFor([](FluidSettings& s) { s.nx = 3; }));
+    QVERIFY(throwsFor([](FluidSettings& s) { s.ny = 100000; }));
+    QVERIFY(throwsFor([&](FluidSettings& s) { s.width = nan; }));
+    QVERIFY(throwsFor([](FluidSettings& s) { s.viscosity = -1e-6; }));
+    QVERIFY(throwsFor([](FluidSettings& s) { s.pressureTolerance = 0.0; }));
+    QVERIFY(!throwsFor([](FluidSettings& s) { s.nx = 4; s.ny = 4; s.viscosity = 0.0; }));
+
+    DeviceFluid fluid(*m_device, settings(16, 8, 2.0, 1.0, 0.0));
+    MacVelocity wrong = FluidSolver(settings(8, 16, 1.0, 2.0, 0.0)).velocity();
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid.writeVelocity(wrong));
+    wrong = fluid.readVelocity();
+    wrong.u.pop_back();
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid.writeVelocity(wrong));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid.step(0.0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid.step(nan));
+}
+
+QTEST_APPLESS_MAIN(TestDeviceFluid)
+#include "tst_device_fluid.moc"
