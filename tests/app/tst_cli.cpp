@@ -673,27 +673,32 @@ void TestCli::devicesListsSomething()
 
 void TestCli::backendChoiceAndFallback_data()
 {
+    QTest::addColumn<QString>("scene");
     QTest::addColumn<QStringList>("options");
     QTest::addColumn<QString>("backend");
     QTest::addColumn<bool>("needsDevice");
     QTest::addColumn<QString>("saysOnStderr");
-    QTest::newRow("default") << QStringList() << QStringLiteral("opencl") << true << QString();
-    QTest::newRow("reference") << QStringList{QStringLiteral("--backend"), QStringLiteral("reference")}
+    QTest::newRow("default") << kStirred << QStringList() << QStringLiteral("opencl") << true << QString();
+    QTest::newRow("reference") << kStirred << QStringList{QStringLiteral("--backend"), QStringLiteral("reference")}
                                << QStringLiteral("reference") << false << QString();
-    QTest::newRow("no such device") << QStringList{QStringLiteral("--device"), QStringLiteral("999")}
+    QTest::newRow("no such device") << kStirred << QStringList{QStringLiteral("--device"), QStringLiteral("999")}
                                     << QStringLiteral("reference") << false
                                     << QStringLiteral("OpenCL backend unavailable (there is no OpenCL device 999");
+    QTest::newRow("expression OpenCL cannot compile")
+        << QStringLiteral(VF_TEST_DATA "/scenes/log-flow.vfscene") << QStringList() << QStringLiteral("reference") << true
+        << QStringLiteral("'log' is not supported by the OpenCL backend");
 }
 
 void TestCli::backendChoiceAndFallback()
 {
+    QFETCH(QString, scene);
     QFETCH(QStringList, options);
     QFETCH(QString, backend);
     QFETCH(bool, needsDevice);
     QFETCH(QString, saysOnStderr);
     if (needsDevice && runCli({QStringLiteral("devices")}).out.startsWith("no OpenCL devices"))
         QSKIP("no OpenCL device on this machine");
-    const CliResult r = runCli(QStringList{QStringLiteral("render"), kStirred, QStringLiteral("--steps"), QStringLiteral("5"),
+    const CliResult r = runCli(QStringList{QStringLiteral("render"), scene, QStringLiteral("--steps"), QStringLiteral("5"),
                                            QStringLiteral("--stats"), path(QStringLiteral("s.json"))}
                                + options);
     QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
