@@ -1,7 +1,9 @@
 #pragma once
-// Analytic flows used by the accuracy tests, as SimulationSettings.
+// Analytic flows and shapes used by the accuracy tests.
 #include "sim/Simulation.h"
 
+#include <cmath>
+#include <numbers>
 #include <string>
 
 namespace vf::test {
@@ -31,6 +33,25 @@ inline sim::SimulationSettings rotation(double period, double maxSpacing, bool a
 {
     const std::string omega = "(2*pi/" + std::to_string(period) + ")";
     return analyticSettings("-" + omega + "*(y-0.5)", omega + "*(x-0.5)", maxSpacing, adaptive);
+}
+
+// Zalesak's slotted disk: radius 0.15 at (0.5, 0.75), a slot 0.05 wide cut 0.25 deep from the
+// side facing +y. Positive area, like every shape the engine makes.
+inline sim::Polygon slottedDisk(double spacing)
+{
+    const sim::Vec2 centre(0.5, 0.75);
+    const double radius = 0.15, halfWidth = 0.025, slotTop = 0.9 - 0.25;
+    const double side = std::asin(halfWidth / radius);
+    const double from = std::numbers::pi / 2 + side, to = 2.5 * std::numbers::pi - side;
+    const int arcSteps = int(std::ceil((to - from) * radius / spacing));
+    sim::Polygon disk;
+    for (int i = 0; i <= arcSteps; ++i) {
+        const double a = from + (to - from) * i / arcSteps;
+        disk.push_back(centre + radius * sim::Vec2(std::cos(a), std::sin(a)));
+    }
+    disk.push_back({0.5 + halfWidth, slotTop});
+    disk.push_back({0.5 - halfWidth, slotTop});
+    return sim::resample(disk, spacing);
 }
 
 } // namespace vf::test

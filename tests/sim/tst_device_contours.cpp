@@ -1,6 +1,8 @@
 // The OpenCL contour tracker (sim/opencl/DeviceContours) against the double-precision reference
 // (sim/ContourTracker): refinement by stream compaction keeps contours closed, ordered and within
 // their spacing; geometry and vertex counts agree with the reference; runs are bit-identical.
+#include "Flows.h"
+
 #include "sim/AnalyticFlow.h"
 #include "sim/ContourTracker.h"
 #include "sim/Simulation.h"
@@ -255,24 +257,6 @@ std::size_t crossings(const std::vector<sim::Contour>& contours)
     return sim::countCrossings(all);
 }
 
-// Zalesak's slotted disk (as tst_tracking): radius 0.15 at (0.5, 0.75), a slot 0.05 wide.
-Polygon slottedDisk(double spacing)
-{
-    const Vec2 centre(0.5, 0.75);
-    const double radius = 0.15, halfWidth = 0.025, slotTop = 0.9 - 0.25;
-    const double side = std::asin(halfWidth / radius);
-    const double from = std::numbers::pi / 2 + side, to = 2.5 * std::numbers::pi - side;
-    const int arcSteps = int(std::ceil((to - from) * radius / spacing));
-    Polygon disk;
-    for (int i = 0; i <= arcSteps; ++i) {
-        const double a = from + (to - from) * i / arcSteps;
-        disk.push_back(centre + radius * Vec2(std::cos(a), std::sin(a)));
-    }
-    disk.push_back({0.5 + halfWidth, slotTop});
-    disk.push_back({0.5 - halfWidth, slotTop});
-    return sim::resample(disk, spacing);
-}
-
 double area(const std::vector<sim::Contour>& contours)
 {
     double a = 0.0;
@@ -382,7 +366,7 @@ void TestDeviceContours::rotationMatchesReference()
 {
     QFETCH(bool, adaptive);
     Pair pair(*m_device, FlowId::Rotation, tracking(1.0 / 256, adaptive));
-    const Polygon start = slottedDisk(1.0 / 256);
+    const Polygon start = test::slottedDisk(1.0 / 256);
     pair.add(0, start);
     for (int step = 0; step < 200; ++step)
         pair.step(0.01);

@@ -49,25 +49,6 @@ SpacingViolation spacingViolation(const sim::Simulation& simulation)
     return worst;
 }
 
-// Zalesak's slotted disk: radius 0.15 at (0.5, 0.75), a slot 0.05 wide cut 0.25 deep from the
-// side facing +y. Positive area, like every shape the engine makes.
-Polygon slottedDisk(double spacing)
-{
-    const Vec2 centre(0.5, 0.75);
-    const double radius = 0.15, halfWidth = 0.025, slotTop = 0.9 - 0.25;
-    const double side = std::asin(halfWidth / radius);
-    const double from = std::numbers::pi / 2 + side, to = 2.5 * std::numbers::pi - side;
-    const int arcSteps = int(std::ceil((to - from) * radius / spacing));
-    Polygon disk;
-    for (int i = 0; i <= arcSteps; ++i) {
-        const double a = from + (to - from) * i / arcSteps;
-        disk.push_back(centre + radius * Vec2(std::cos(a), std::sin(a)));
-    }
-    disk.push_back({0.5 + halfWidth, slotTop});
-    disk.push_back({0.5 - halfWidth, slotTop});
-    return sim::resample(disk, spacing);
-}
-
 // Backend × {uniform, adaptive} spacing.
 void addSpacingModeRows()
 {
@@ -238,7 +219,7 @@ void TestTracking::slottedDiskKeepsCorners()
     QFETCH(bool, adaptive);
     // One revolution of rigid rotation must bring every corner of the slot back.
     auto simulation = test::makeBackend(backend, test::rotation(2.0, 1.0 / 256, adaptive));
-    const Polygon start = slottedDisk(1.0 / 256);
+    const Polygon start = test::slottedDisk(1.0 / 256);
     QVERIFY(sim::signedArea(start) > 0.0);
     simulation->addRegion({start});
     for (int step = 0; step < 200; ++step)
