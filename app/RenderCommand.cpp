@@ -35,20 +35,19 @@ void fail(const QString& line)
 }
 
 // The backend the options ask for. OpenCL is the default wherever a device can run the scene;
-// where none can, one line says why (a failed kernel build adds its log below it) and the
-// reference backend runs instead.
-model::SimulationFactory backendFactory(const RenderOptions& options)
+// where none can, `notice` gets one line saying why (and a failed kernel build's log below it),
+// shown once the run is done, and the reference backend runs instead.
+model::SimulationFactory backendFactory(const RenderOptions& options, QString& notice)
 {
-    return [&options](const sim::SimulationSettings& settings) -> std::unique_ptr<sim::Simulation> {
+    return [&options, &notice](const sim::SimulationSettings& settings) -> std::unique_ptr<sim::Simulation> {
         if (options.backend != QLatin1String("reference")) {
             try {
                 return std::make_unique<sim::opencl::OpenClSimulation>(settings, options.device);
             } catch (const sim::opencl::DeviceError& e) {
                 const QString what = QString::fromUtf8(e.what());
-                QTextStream(stderr) << "vectorfluid: OpenCL backend unavailable (" << what.section('\n', 0, 0)
-                                    << "); using the reference backend\n";
+                notice = QStringLiteral("OpenCL backend unavailable (%1); using the reference backend").arg(what.section('\n', 0, 0));
                 if (what.contains('\n'))
-                    QTextStream(stderr) << what.section('\n', 1) << '\n';
+                    notice += '\n' + what.section('\n', 1);
             }
         }
         return sim::makeReferenceSimulation(settings);
@@ -98,9 +97,11 @@ QString checkOutputFolders(const RenderOptions& options)
     return {};
 }
 
-QString framePath(const QString& dir, qint64 step)
+// frame-000042.svg: numbers padded to the same width (at least 6 digits), so names sort in order.
+QString framePath(const QString& dir, qint64 step, qint64 lastStep)
 {
-    return QDir(dir).filePath(QStringLiteral("frame-%1.svg").arg(step, 6, 10, QLatin1Char('0')));
+    const int digits = std::max<int>(6, QString::number(lastStep).size());
+    return QDir(dir).filePath(QStringLiteral("frame-%1.svg").arg(step, digits, 10, QLatin1Char('0')));
 }
 
 } // namespace
@@ -126,20 +127,26 @@ int renderCommand(const QStringList& arguments)
     const qint64 steps = options->steps.value_or(read.scene.time.steps);
     const double dt = options->dt.value_or(read.scene.time.dt);
     RunTotals totals;
+    QString notice;
     try {
-        model::SceneRunner runner(read.scene, backendFactory(*options));
+        model::SceneRunner runner(read.scene, backendFactory(*options, notice));
         auto writeFrame = [&](qint64 step) {
             if (options->framesDir.isEmpty() || step % options->every != 0)
                 return QString();
-            return render::exportDrawing(runner.drawing(), framePath(options->framesDir, step), options->exportOptions);
+            return render::exportDrawing(runner.drawing(), framePath(options->framesDir, step, steps), options->exportOptions);
         };
+        const QString vertexLimit = QStringLiteral("max_vertices (%1) reached").arg(read.scene.tracking.maxVertices);
+        if (runner.vertexLimitReached()) {  // drops at t = 0 already took it there
+            totals.limitHit = true;
+            totals.limit = vertexLimit;
+        }
         error = writeFrame(0);
         while (error.isEmpty() && totals.steps < steps && !totals.limitHit) {
             const auto start = std::chrono::steady_clock::now();
             try {
                 if (runner.step(dt).vertexLimitReached) {
                     totals.limitHit = true;
-                    totals.limit = QStringLiteral("max_vertices (%1) reached").arg(read.scene.tracking.maxVertices);
+                    totals.limit = vertexLimit;
                 }
             } catch (const sim::opencl::DeviceError& e) {  // e.g. the device ran out of memory
                 totals.limitHit = true;
@@ -161,9 +168,11 @@ int renderCommand(const QStringList& arguments)
         error = QStringLiteral("%1: %2").arg(options->scene, QString::fromUtf8(e.what()));
     }
     if (!error.isEmpty()) {
-        fail(error);
+        fail(error);  // the one line bad input gets; a fallback notice would only distract from it
         return BadInput;
     }
+    if (!notice.isEmpty())
+        fail(notice);
     if (totals.limitHit) {
         fail(QStringLiteral("%1: %2 at step %3 of %4; the files hold the state at that step")
                  .arg(options->scene, totals.limit)

@@ -1,5 +1,7 @@
 #include "app/RenderOptions.h"
 
+#include "model/Scene.h"
+
 #include <cmath>
 #include <functional>
 #include <map>
@@ -11,13 +13,13 @@ namespace {
 // Each option that takes a value: reads it into the options, or returns what is wrong with it.
 using Setter = std::function<QString(RenderOptions&, const QString&)>;
 
-QString wholeNumber(const QString& option, const QString& value, qint64 minimum, qint64& into)
+QString wholeNumber(const QString& option, const QString& value, qint64 minimum, qint64 maximum, qint64& into)
 {
     bool ok = false;
     into = value.toLongLong(&ok);
-    if (ok && into >= minimum)
+    if (ok && into >= minimum && into <= maximum)
         return {};
-    return QStringLiteral("%1: '%2' is not a whole number of at least %3").arg(option, value).arg(minimum);
+    return QStringLiteral("%1: '%2' is not a whole number from %3 to %4").arg(option, value).arg(minimum).arg(maximum);
 }
 
 QString positiveNumber(const QString& option, const QString& value, double maximum, double& into)
@@ -34,7 +36,7 @@ const std::map<QString, Setter>& valueOptions()
     static const std::map<QString, Setter> options{
         {"--steps", [](RenderOptions& o, const QString& v) {
              qint64 n = 0;
-             QString error = wholeNumber("--steps", v, 0, n);
+             QString error = wholeNumber("--steps", v, 0, model::limits::maxSteps, n);
              o.steps = n;
              return error;
          }},
@@ -52,8 +54,8 @@ const std::map<QString, Setter>& valueOptions()
          }},
         {"--device", [](RenderOptions& o, const QString& v) {
              qint64 n = 0;
-             QString error = wholeNumber("--device", v, 0, n);
-             o.device = int(std::min<qint64>(n, 1 << 20));
+             QString error = wholeNumber("--device", v, 0, 1 << 20, n);
+             o.device = int(n);
              return error;
          }},
         {"--out", [](RenderOptions& o, const QString& v) {
@@ -64,7 +66,7 @@ const std::map<QString, Setter>& valueOptions()
          }},
         {"--dpi", [](RenderOptions& o, const QString& v) { return positiveNumber("--dpi", v, 4800.0, o.exportOptions.dpi); }},
         {"--frames", [](RenderOptions& o, const QString& v) { o.framesDir = v; return QString(); }},
-        {"--every", [](RenderOptions& o, const QString& v) { return wholeNumber("--every", v, 1, o.every); }},
+        {"--every", [](RenderOptions& o, const QString& v) { return wholeNumber("--every", v, 1, model::limits::maxSteps, o.every); }},
         {"--stats", [](RenderOptions& o, const QString& v) { o.statsFile = v; return QString(); }},
     };
     return options;

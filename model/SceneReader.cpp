@@ -363,7 +363,7 @@ const Key<TrackingSpec> trackingKeys[] = {
     {u"adaptive"_s, false, [](const Field& f, TrackingSpec& t) { t.adaptive = f.boolean(); }},
     {u"proximity"_s, false, [](const Field& f, TrackingSpec& t) { t.proximity = f.boolean(); }},
     {u"area_correction"_s, false, [](const Field& f, TrackingSpec& t) { t.areaCorrection = f.boolean(); }},
-    {u"max_vertices"_s, false, [](const Field& f, TrackingSpec& t) { t.maxVertices = f.integer(1, limits::maxVertices); }},
+    {u"max_vertices"_s, false, [](const Field& f, TrackingSpec& t) { t.maxVertices = f.integer(3, limits::maxVertices); }},  // a contour has at least 3
 };
 
 // ---- regions and their shapes -----------------------------------------------------------------

@@ -34,7 +34,11 @@ SceneRunner::SceneRunner(Scene scene, const SimulationFactory& factory)
     for (const RegionSpec& r : m_scene.regions) {
         m_simulation->addRegion(shapeContours(r.shape, m_scene.tracking.maxSpacing));
         m_looks.push_back({r.name, r.color, r.visible});
+        m_takenNames.insert(r.name);
     }
+    for (const Stroke& s : m_scene.strokes)
+        if (const auto* d = std::get_if<DropStroke>(&s); d && !d->name.isEmpty())
+            m_takenNames.insert(d->name);
     applyDrops(-INFINITY, 0.0);  // drops at t = 0 are part of the starting picture
 }
 
@@ -52,9 +56,11 @@ void SceneRunner::applyDrops(double from, double to)
     });
     for (std::size_t i : due) {
         const auto& drop = std::get<DropStroke>(m_scene.strokes[i]);
-        m_simulation->drop(drop.center, drop.radius);
+        m_vertexLimitReached = m_simulation->drop(drop.center, drop.radius).vertexLimitReached || m_vertexLimitReached;
         ++m_dropsLanded;
-        m_looks.push_back({drop.name.isEmpty() ? unusedDropName() : drop.name, drop.color, true});
+        const QString name = drop.name.isEmpty() ? unusedDropName() : drop.name;
+        m_takenNames.insert(name);
+        m_looks.push_back({name, drop.color, true});
         m_dropDone[i] = true;
     }
 }
@@ -63,17 +69,8 @@ QString SceneRunner::unusedDropName() const
 {
     // "drop N" after the drops landed so far, skipping names a region or a named drop already
     // has: region names become SVG ids and layer labels, so they stay unique.
-    auto taken = [this](const QString& name) {
-        for (const Stroke& s : m_scene.strokes)
-            if (const auto* d = std::get_if<DropStroke>(&s); d && d->name == name)
-                return true;
-        for (const RegionLook& look : m_looks)
-            if (look.name == name)
-                return true;
-        return false;
-    };
     for (int n = m_dropsLanded;; ++n)
-        if (const QString name = QStringLiteral("drop %1").arg(n); !taken(name))
+        if (const QString name = QStringLiteral("drop %1").arg(n); !m_takenNames.contains(name))
             return name;
 }
 
@@ -98,10 +95,15 @@ void SceneRunner::applyStylus(double from, double to)
 
 sim::StepReport SceneRunner::step(double dt)
 {
-    const double t = m_simulation->time();
-    applyDrops(t, t + dt);
-    applyStylus(t, t + dt);
-    const sim::StepReport report = m_simulation->step(dt);
+    // The scene's own clock, one addition per step: the simulation's time sums substeps and may
+    // land a few ulps off, which could let a drop fall between two steps' windows.
+    const double t = m_clock;
+    m_clock += dt;
+    applyDrops(t, m_clock);
+    applyStylus(t, m_clock);
+    sim::StepReport report = m_simulation->step(dt);
+    report.vertexLimitReached = report.vertexLimitReached || m_vertexLimitReached;
+    m_vertexLimitReached = report.vertexLimitReached;
     ++m_steps;
     return report;
 }

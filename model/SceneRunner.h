@@ -5,6 +5,8 @@
 #include "model/Scene.h"
 #include "sim/Simulation.h"
 
+#include <QSet>
+
 #include <functional>
 #include <memory>
 
@@ -22,6 +24,8 @@ public:
     const Scene& scene() const { return m_scene; }
     const sim::Simulation& simulation() const { return *m_simulation; }
     std::int64_t stepsDone() const { return m_steps; }
+    // Whether a drop or a step has taken the vertex count to tracking.max_vertices.
+    bool vertexLimitReached() const { return m_vertexLimitReached; }
 
     // One step of the scene's dt (or `dt` when given): drops whose time has come land first, then
     // the stylus strokes' share of this interval acts on the fluid, then the simulation steps.
@@ -44,8 +48,11 @@ private:
     std::unique_ptr<sim::Simulation> m_simulation;
     std::vector<RegionLook> m_looks;  // indexed by simulation region
     std::vector<bool> m_dropDone;     // per stroke
+    QSet<QString> m_takenNames;       // of regions and drops, so every region's name is unique
     int m_dropsLanded = 0;
     std::int64_t m_steps = 0;
+    double m_clock = 0.0;
+    bool m_vertexLimitReached = false;
 };
 
 } // namespace vf::model

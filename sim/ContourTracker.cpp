@@ -263,6 +263,7 @@ bool ContourTracker::refineAll(const MotionMap& map, const Flow& flow, double t)
         total -= c.positions.size();
         const std::size_t budget = m_settings.maxVertices > total ? m_settings.maxVertices - total : 0;
         withinBudget = refine(c, map, budget) && withinBudget;
+        requireFinite(c);  // split and recentred vertices come from the motion too
         total += c.positions.size();
         if (m_settings.areaCorrection)
             correctArea(c.positions, c.targetArea);

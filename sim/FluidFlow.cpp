@@ -1,6 +1,7 @@
 #include "sim/FluidFlow.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace vf::sim {
 
@@ -42,21 +43,19 @@ double FluidFlow::blend(double t) const
     return span > 0.0 ? std::clamp((t - m_stepStart) / span, 0.0, 1.0) : 1.0;
 }
 
-namespace {
-
-} // namespace
-
 // The flow `s` of the way through the step; `sample` reads one value out of a field. RK4 asks at
-// s = 0, ½, ½, 1, each answered by one field.
+// s = 0, ½, ½, 1 (up to rounding in computing s), each answered by one field: the fields differ
+// from the blend there by rounding of the same order.
 template <typename Sample>
 auto FluidFlow::interpolate(double s, Sample sample) const
 {
-    if (s == 1.0)
+    constexpr double near = 1e-9;
+    if (s > 1.0 - near)
         return sample(m_solver.velocity());
-    if (s == 0.5)
+    if (std::abs(s - 0.5) < near)
         return sample(m_middle);
     const auto start = sample(m_previous);
-    if (s == 0.0)
+    if (s < near)
         return start;
     return start + s * (sample(m_solver.velocity()) - start);
 }

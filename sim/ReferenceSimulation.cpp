@@ -37,7 +37,7 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
     return m_regionCount++;
 }
 
-int ReferenceSimulation::drop(Vec2 center, double radius)
+DropReport ReferenceSimulation::drop(Vec2 center, double radius)
 {
     const double r2 = radius * radius;
     const MotionMap push = [center, radius, r2](Vec2 p) {
@@ -51,8 +51,11 @@ int ReferenceSimulation::drop(Vec2 center, double radius)
     // drop's own polygon so that the ring it leaves keeps exactly the area it had.
     const Polygon dropped = circle(center, radius, m_settings.tracking.maxSpacing);
     m_tracker.growTargetAreasAround(center, signedArea(dropped));
-    m_tracker.applyMotion(push, *m_flow, time());
-    return addRegion({dropped});
+    const bool refined = m_tracker.applyMotion(push, *m_flow, time());
+    DropReport report;
+    report.region = addRegion({dropped});
+    report.vertexLimitReached = !refined || vertexCount() > m_settings.tracking.maxVertices;
+    return report;
 }
 
 void ReferenceSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration)

@@ -24,6 +24,11 @@ struct StepReport {
     int substeps = 1;
 };
 
+struct DropReport {
+    int region = 0;                   // the new region's index
+    bool vertexLimitReached = false;  // the drop took the vertex count to tracking.maxVertices
+};
+
 class Simulation {
 public:
     virtual ~Simulation() = default;
@@ -37,7 +42,7 @@ public:
     // which pushes old ink outward and keeps its area, then a circle of radius r at C becomes a new
     // region, whose index is returned. Regions are painted in order, so ink the drop lands in
     // shows as a ring around it: its contour then encloses the drop too (area + π r²).
-    virtual int drop(Vec2 center, double radius) = 0;
+    virtual DropReport drop(Vec2 center, double radius) = 0;
     // The stylus moved from `from` to `to` during `duration` seconds; acts during the next step.
     // Only a fluid flow responds.
     virtual void stylus(Vec2 from, Vec2 to, double radius, double duration) = 0;

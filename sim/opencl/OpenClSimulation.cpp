@@ -58,13 +58,16 @@ int OpenClSimulation::addRegion(const std::vector<Polygon>& contours)
     return m_regionCount++;
 }
 
-int OpenClSimulation::drop(Vec2 center, double radius)
+DropReport OpenClSimulation::drop(Vec2 center, double radius)
 {
     // As ReferenceSimulation::drop: contours around the centre come to enclose the drop as well.
     const Polygon dropped = circle(center, radius, m_settings.tracking.maxSpacing);
     m_contours->growTargetAreasAround(center, signedArea(dropped));
-    m_contours->drop(center, radius, binding(m_time, m_time), m_time);
-    return addRegion({dropped});
+    const bool refined = m_contours->drop(center, radius, binding(m_time, m_time), m_time);
+    DropReport report;
+    report.region = addRegion({dropped});
+    report.vertexLimitReached = !refined || vertexCount() > m_settings.tracking.maxVertices;
+    return report;
 }
 
 void OpenClSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration)

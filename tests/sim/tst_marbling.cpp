@@ -133,7 +133,7 @@ void TestMarbling::dropPushesInkOutwardAndKeepsArea()
     std::vector<int> drops;
     std::vector<double> droppedArea;
     for (int k = 0; k < 3; ++k) {
-        drops.push_back(simulation->drop(centre, radius));
+        drops.push_back(simulation->drop(centre, radius).region);
         droppedArea.push_back(regionArea(*simulation, drops.back()));
     }
     const double outermost = std::sqrt(3.0) * radius;  // three discs of radius r fill radius r·√3
