@@ -1,6 +1,7 @@
 #include "render/Exporter.h"
 
 #include "model/AtomicFile.h"
+#include "render/Page.h"
 #include "render/Writers.h"
 
 #include <QFileInfo>
@@ -16,13 +17,19 @@ using Writer = QString (*)(const model::Drawing&, const ExportOptions&, QIODevic
 struct Format {
     const char* suffix; // lower case, without the dot
     Writer write;
+    double maxPageSide; // points; 0 for no limit
 };
 
+// PDF viewers and PostScript interpreters take pages of at most 200 inches a side (the PDF
+// reference's implementation limit, which Ghostscript enforces for EPS too); Cairo's 24.8 fixed
+// point would also overflow far beyond it.
+constexpr double kPrintLimit = 14400.0;
+
 constexpr std::array kFormats{
-    Format{"svg", writeSvg},
-    Format{"pdf", writePdf},
-    Format{"eps", writeEps},
-    Format{"png", writePng},
+    Format{"svg", writeSvg, 0.0},
+    Format{"pdf", writePdf, kPrintLimit},
+    Format{"eps", writeEps, kPrintLimit},
+    Format{"png", writePng, 0.0},
 };
 
 const Format* formatFor(const QString& path)
@@ -81,6 +88,13 @@ QString exportDrawing(const model::Drawing& drawing, const QString& path, const 
         return failure(path, QStringLiteral("unknown export format (use .svg, .pdf, .eps or .png)"));
     if (const QString error = check(drawing, options); !error.isEmpty())
         return failure(path, error);
+    if (const Page page = pageFor(drawing, options);
+        format->maxPageSide > 0 && std::max(page.width, page.height) > format->maxPageSide)
+        return failure(path, QStringLiteral("the page would be %1 x %2 pt; %3 pages are at most %4 pt a side")
+                                 .arg(page.width, 0, 'g', 4)
+                                 .arg(page.height, 0, 'g', 4)
+                                 .arg(QString::fromLatin1(format->suffix).toUpper())
+                                 .arg(format->maxPageSide));
 
     return model::saveAtomically(path, [&](QIODevice& file) { return format->write(drawing, options, file); });
 }

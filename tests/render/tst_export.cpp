@@ -484,6 +484,11 @@ void TestExport::failedExportLeavesOldFileUntouched_data()
     // The PNG case fails inside the writer, after the temporary file was opened.
     QTest::newRow("image too large") << QStringLiteral("old.png") << probeDrawing() << 1e7;
     QTest::newRow("non-finite vertex") << QStringLiteral("old.svg") << bad << 150.0;
+    // A canvas 1e4 times taller than wide makes a page of 5.76e6 pt: beyond PDF and EPS readers.
+    model::Drawing tall = probeDrawing();
+    tall.height = tall.width * 1e4;
+    QTest::newRow("page too tall for PDF") << QStringLiteral("old.pdf") << tall << 150.0;
+    QTest::newRow("page too tall for EPS") << QStringLiteral("old.eps") << tall << 150.0;
 }
 
 void TestExport::failedExportLeavesOldFileUntouched()
