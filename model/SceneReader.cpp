@@ -395,7 +395,7 @@ PolygonShape readPolygon(const Field& field)
             field.fail(u"point %1 repeats point %2 (a polygon closes itself: leave the last point out)"_s.arg(i).arg(previous));
     }
     if (!sim::isSimple(points))
-        field.fail(u"the polygon crosses itself"_s);
+        field.fail(u"the polygon crosses or touches itself"_s);
     const double scale = sim::perimeter(points);
     if (std::abs(sim::signedArea(points)) <= 1e-12 * scale * scale)
         field.fail(u"the polygon encloses no area"_s);

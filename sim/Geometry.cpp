@@ -88,6 +88,23 @@ bool properlyIntersect(const Segment& s, const Segment& t)
     return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
+bool onSegment(Vec2 p, const Segment& s)
+{
+    return cross(s.a, s.b, p) == 0.0 && p.x >= std::min(s.a.x, s.b.x) && p.x <= std::max(s.a.x, s.b.x)
+           && p.y >= std::min(s.a.y, s.b.y) && p.y <= std::max(s.a.y, s.b.y);
+}
+
+bool touch(const Segment& s, const Segment& t)
+{
+    return onSegment(s.a, t) || onSegment(s.b, t) || onSegment(t.a, s) || onSegment(t.b, s);
+}
+
+// Consecutive edges a→b, b→c fold back when c lies on the line through a and b, behind b.
+bool foldsBack(const Segment& s, const Segment& t)
+{
+    return cross(s.a, s.b, t.b) == 0.0 && glm::dot(s.b - s.a, t.b - t.a) < 0.0;
+}
+
 bool areNeighbours(const Segment& s, const Segment& t)
 {
     if (s.polygon != t.polygon)
@@ -98,7 +115,12 @@ bool areNeighbours(const Segment& s, const Segment& t)
 
 } // namespace
 
-std::size_t countCrossings(const std::vector<const Polygon*>& polygons)
+namespace {
+
+// Pairs of edges over all polygons that `meet` (neighbours sharing a vertex are passed to
+// `meetNeighbours` instead), found through a uniform segment grid.
+template <typename Meet, typename MeetNeighbours>
+std::size_t countMeetings(const std::vector<const Polygon*>& polygons, Meet meet, MeetNeighbours meetNeighbours)
 {
     std::vector<Segment> segments;
     Vec2 lo(INFINITY), hi(-INFINITY);
@@ -148,13 +170,31 @@ std::size_t countCrossings(const std::vector<const Polygon*>& polygons)
                     const int firstCol = std::max(column(std::min(s.a.x, s.b.x)), column(std::min(t.a.x, t.b.x)));
                     if (firstRow != r || firstCol != c)
                         continue;
-                    if (!areNeighbours(s, t) && properlyIntersect(s, t))
+                    if (areNeighbours(s, t) ? meetNeighbours(s, t) : meet(s, t))
                         ++crossings;
                 }
             }
         }
     }
     return crossings;
+}
+
+} // namespace
+
+std::size_t countCrossings(const std::vector<const Polygon*>& polygons)
+{
+    return countMeetings(polygons, properlyIntersect, [](const Segment&, const Segment&) { return false; });
+}
+
+bool isSimple(const Polygon& polygon)
+{
+    const auto meet = [](const Segment& s, const Segment& t) { return properlyIntersect(s, t) || touch(s, t); };
+    const auto neighboursMeet = [](const Segment& s, const Segment& t) {
+        if (s.count == 3)
+            return false;  // a triangle's edges are all neighbours; only a zero area would be wrong
+        return s.index + 1 == t.index || (t.index == 0 && s.index + 1 == s.count) ? foldsBack(s, t) : foldsBack(t, s);
+    };
+    return countMeetings({&polygon}, meet, neighboursMeet) == 0;
 }
 
 namespace {
