@@ -1,11 +1,14 @@
 // vf_bench: the speed bar of DESIGN.md §4. Vertex-steps per second of the full step (fluid solve,
 // RK4 advection, adaptive spacing with the proximity term, refinement) at 100k and 1M vertices for
-// every backend, beside a naive scalar RK4 loop over the same number of points in the same flow,
-// in one run of one binary. docs/BENCHMARKS.md has the figures, the machine and the commands.
+// every backend, beside a naive scalar RK4 loop over the same number of points in the same flow
+// (and, for the OpenCL backend, its bare RK4 kernel), in one run of one binary. docs/BENCHMARKS.md
+// has the figures, the machine and the commands.
 //
-// Families (run in this order, so the full step can report its ratio to the naive loop):
+// Families (run in this order, so the full step can report its ratios to the baselines):
 //   NaiveRk4/N                 plain std::vector<dvec2>, classic RK4 through FluidFlow::velocity
-//   FullStep/<backend>/N       Simulation::step through the backend interface
+//   BareRk4Kernel/N            the OpenCL backend's own RK4 advection kernel alone over N points in
+//                              the device fluid: the ceiling the OpenCL step's throughput is held to
+//   FullStep/<backend>/N       Simulation::step through the backend interface (reference, opencl)
 //   Breakdown/reference/N      the reference step taken apart phase by phase (ms per step)
 //
 // The scene: the default 64×64 fluid, stirred by a pen that circles the canvas centre at a steady
@@ -16,6 +19,11 @@
 #include "sim/ProximityGrid.h"
 #include "sim/Simulation.h"
 #include "sim/SpacingField.h"
+#include "sim/opencl/DeviceContours.h"
+#include "sim/opencl/DeviceFluid.h"
+#include "sim/opencl/KernelSources.h"
+#include "sim/opencl/Launch.h"
+#include "sim/opencl/OpenClSimulation.h"
 
 #include <benchmark/benchmark.h>
 #include <malloc.h>
@@ -30,6 +38,7 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,7 +55,7 @@ double threadSeconds()
     return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-// ---- Backends: each one becomes a FullStep family. The OpenCL backend adds its factory here. ----
+// ---- Backends: each one becomes a FullStep family -----------------------------------------------
 
 struct Backend {
     const char* name;
@@ -55,7 +64,12 @@ struct Backend {
 
 const std::vector<Backend>& backends()
 {
-    static const std::vector<Backend> list{{"reference", &makeReferenceSimulation}};
+    static const std::vector<Backend> list{
+        {"reference", &makeReferenceSimulation},
+        // The device VF_OPENCL_DEVICE names, else the first GPU, else the first CPU (PoCL).
+        {"opencl", [](const SimulationSettings& s) -> std::unique_ptr<Simulation> {
+             return std::make_unique<opencl::OpenClSimulation>(s, std::nullopt);
+         }}};
     return list;
 }
 
@@ -149,6 +163,8 @@ double heapInUse()
 // Wall-clock vertex-steps / s of every NaiveRk4 run (repetitions included) by target size, for the
 // FullStep's ratio; the median is used.
 std::map<std::int64_t, std::vector<double>> g_naiveRates;
+// The same for BareRk4Kernel, for the OpenCL full step's ratio to it.
+std::map<std::int64_t, std::vector<double>> g_bareRates;
 
 double median(std::vector<double> values)
 {
@@ -164,6 +180,23 @@ Vec2 naiveRk4(const FluidFlow& flow, Vec2 p, double t, double dt)
     const Vec2 k3 = flow.velocity(p + 0.5 * dt * k2, t + 0.5 * dt);
     const Vec2 k4 = flow.velocity(p + dt * k3, t + dt);
     return p + (dt / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+// Exactly `target` points spread evenly over the scene's circles: what the baselines advance.
+std::vector<Vec2> pointsOnCircles(const Layout& layout, std::int64_t target)
+{
+    const std::vector<Vec2> centres = circleCentres(layout);
+    std::vector<Vec2> points;
+    points.reserve(std::size_t(target));
+    const std::int64_t circles = std::int64_t(centres.size());
+    for (std::int64_t c = 0; c < circles; ++c) {
+        const std::int64_t n = target / circles + (c < target % circles ? 1 : 0);
+        for (std::int64_t k = 0; k < n; ++k) {
+            const double angle = 2.0 * std::numbers::pi * double(k) / double(n);
+            points.push_back(centres[c] + layout.radius * Vec2(std::cos(angle), std::sin(angle)));
+        }
+    }
+    return points;
 }
 
 // Exactly N points on the same circles, advanced by classic RK4 through the same stirred flow
@@ -182,17 +215,7 @@ void naiveRk4Benchmark(benchmark::State& state, std::int64_t target)
     while (step < kStirSteps + kWarmupSteps)
         stirAndAdvance();
 
-    const std::vector<Vec2> centres = circleCentres(layout);
-    std::vector<Vec2> points;
-    points.reserve(std::size_t(target));
-    const std::int64_t circles = std::int64_t(centres.size());
-    for (std::int64_t c = 0; c < circles; ++c) {
-        const std::int64_t n = target / circles + (c < target % circles ? 1 : 0);
-        for (std::int64_t k = 0; k < n; ++k) {
-            const double angle = 2.0 * std::numbers::pi * double(k) / double(n);
-            points.push_back(centres[c] + layout.radius * Vec2(std::cos(angle), std::sin(angle)));
-        }
-    }
+    std::vector<Vec2> points = pointsOnCircles(layout, target);
 
     double seconds = 0.0, cpuSeconds = 0.0;
     for (auto _ : state) {
@@ -217,12 +240,88 @@ void naiveRk4Benchmark(benchmark::State& state, std::int64_t target)
     state.counters["B_per_vertex"] = double(sizeof(Vec2));  // the points array, all there is
 }
 
+// ---- BareRk4Kernel ------------------------------------------------------------------------------
+
+// The `advect` kernel of contours.cl (classic RK4 through flow_fluid.cl's sampling, the kernel the
+// full step advects with) alone, over exactly N float points on the same circles, in the same
+// stirred DeviceFluid: no spacing, no refinement, no proximity, the fluid solve outside the timing.
+// Timed from the launch to the queue's finish.
+void bareRk4KernelBenchmark(benchmark::State& state, std::int64_t target)
+{
+    using namespace vf::sim::opencl;
+    std::optional<Device> device;
+    try {
+        device = Device::open();
+    } catch (const DeviceError& e) {
+        state.SkipWithError((std::string("OpenCL backend skipped: ") + e.what()).c_str());
+        return;
+    }
+    const Layout layout = layoutFor(target);
+    const FluidSettings fluidSettings = settingsFor(layout).fluid;
+    DeviceFluid fluid(*device, fluidSettings);
+    int step = 0;
+    double time = 0.0;
+    const auto stirAndAdvance = [&] {
+        fluid.addStylus(penAt(step), penAt(step + 1), kPenRadius, kDt);
+        fluid.step(kDt);
+        ++step;
+        time += kDt;
+    };
+    while (step < kStirSteps + kWarmupSteps)
+        stirAndAdvance();
+
+    const bool fp64 = device->hasFp64();
+    const std::string acc = fp64 ? "double" : "float";
+    const cl::Program program =
+        device->build(joinedKernelSources({"flow.h.cl", "flow_fluid.cl", "workgroup.cl", "contours.cl"}),
+                      "contours.cl", commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc +
+                                         "2 -DVF_ACC4=" + acc + "4");
+    cl::Kernel advect(program, "advect");
+    std::vector<cl_float4> motion;
+    for (const Vec2& p : pointsOnCircles(layout, target))
+        motion.push_back({{cl_float(p.x), cl_float(p.y), cl_float(p.x), cl_float(p.y)}});
+    cl::CommandQueue& queue = device->queue();
+    const cl::Buffer points(device->context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR,
+                            motion.size() * sizeof(cl_float4), motion.data());
+    const cl::Buffer status(device->context(), CL_MEM_READ_WRITE, 3 * sizeof(cl_uint));
+    queue.enqueueFillBuffer(status, cl_uint(0), 0, 3 * sizeof(cl_uint));
+    // MOTION_ARGS of contours.cl: RK4 through the flow.
+    const cl_int motionFlow = 0, rewind = 1;
+    const cl_float2 noCentre{{0.0f, 0.0f}};
+    const auto n = cl_uint(target);
+
+    double seconds = 0.0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        stirAndAdvance();
+        queue.finish();
+        state.ResumeTiming();
+        const auto start = Clock::now();
+        launch(queue, advect, std::size_t(n), fluid.binding(time - kDt, time), motionFlow, noCentre, cl_float(0),
+               rewind, points, n, status);
+        queue.finish();
+        seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    const double vertexSteps = double(target) * double(state.iterations());
+    g_bareRates[target].push_back(vertexSteps / seconds);
+    state.counters["vertices"] = double(target);
+    state.counters["vertex_steps_per_s"] = benchmark::Counter(vertexSteps, benchmark::Counter::kIsRate);
+    if (const auto naive = g_naiveRates.find(target); naive != g_naiveRates.end())
+        state.counters["bare_over_naive"] = (vertexSteps / seconds) / median(naive->second);
+}
+
 // ---- FullStep -----------------------------------------------------------------------------------
 
 void fullStepBenchmark(benchmark::State& state, const Backend& backend, std::int64_t target)
 {
     const Layout layout = layoutFor(target);
-    std::unique_ptr<Simulation> sim = backend.make(settingsFor(layout));
+    std::unique_ptr<Simulation> sim;
+    try {
+        sim = backend.make(settingsFor(layout));
+    } catch (const opencl::DeviceError& e) {
+        state.SkipWithError((std::string("OpenCL backend skipped: ") + e.what()).c_str());
+        return;
+    }
     int step = 0;
     const auto stirAndStep = [&] {
         sim->stylus(penAt(step), penAt(step + 1), kPenRadius, kDt);
@@ -264,6 +363,11 @@ void fullStepBenchmark(benchmark::State& state, const Backend& backend, std::int
     state.counters["live_heap_B_per_vertex"] = (heapInUse() - heapBaseline) / double(sim->vertexCount());
     if (const auto naive = g_naiveRates.find(target); naive != g_naiveRates.end())
         state.counters["full_over_naive"] = (vertexSteps / seconds) / median(naive->second);
+    // Only the OpenCL step runs the bare kernel's code; beside the reference the ratio means nothing.
+    if (const auto bare = g_bareRates.find(target); bare != g_bareRates.end() && sim->backendName() == "opencl")
+        state.counters["full_over_bare"] = (vertexSteps / seconds) / median(bare->second);
+    if (sim->backendName() == "opencl")
+        state.counters["device_B_per_vertex"] = double(opencl::DeviceContours::bytesPerVertex());
     if (limited)
         state.SkipWithError("refinement hit max_vertices: the scene is not the one described");
 }
@@ -377,6 +481,12 @@ void registerAll()
 {
     for (const Size& s : kSizes)
         benchmark::RegisterBenchmark(("NaiveRk4/" + std::to_string(s.vertices)).c_str(), naiveRk4Benchmark, s.vertices)
+            ->Unit(benchmark::kMillisecond)
+            ->Iterations(s.naiveIterations)
+            ->UseRealTime();
+    for (const Size& s : kSizes)
+        benchmark::RegisterBenchmark(("BareRk4Kernel/" + std::to_string(s.vertices)).c_str(), bareRk4KernelBenchmark,
+                                     s.vertices)
             ->Unit(benchmark::kMillisecond)
             ->Iterations(s.naiveIterations)
             ->UseRealTime();

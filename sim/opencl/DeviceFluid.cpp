@@ -549,13 +549,14 @@ struct DeviceFluid::Impl {
     std::size_t uCount, vCount;
     Memory memory;
     cl::Program program;
-    Field current, start;
+    Field current;
+    Field start;  // the field at the step's start, then the halfway field (flow_fluid.cl)
     Field forward;  // MacCormack: the semi-Lagrangian result, traced back
     DevicePcg pressure;
     std::vector<DevicePcg> viscosity;  // u, v; none for an inviscid fluid
     Launch advect;
     std::vector<Launch> correct;  // MacCormack's second pass, if any
-    Launch stylus, divergence, gradient;
+    Launch stylus, divergence, gradient, halfway;
     std::vector<Launch> gather, scatter;
     std::vector<StylusSegment> pending;
 };
@@ -574,7 +575,8 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
     , program(device.build(joinedKernelSources({"flow.h.cl", "flow_fluid.cl", "fluid.cl"}),
                            "the fluid solver (fluid.cl)", buildOptions()))
     , current(field())
-    , start(field())
+    , start{memory.zeros(2 * uCount * sizeof(cl_float)),
+            memory.zeros(2 * vCount * sizeof(cl_float))}
     , pressure(device, memory, program, pressureStencil(), float(s.pressureTolerance),
                kPressureRoundoffFloor)
 {
@@ -597,6 +599,7 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
                              nx, ny);
     gradient = overFaces(kernel(program, "subtractGradient", current.u, current.v, pressure.x(), nx,
                                 ny, float(hx), float(hy)));
+    halfway = overFaces(kernel(program, "halfway", start.u, start.v, current.u, current.v, nx, ny));
     if (s.viscosity == 0.0)
         return;
     viscosity.reserve(2);
@@ -637,7 +640,7 @@ Stencil5 DeviceFluid::Impl::viscousStencil(int component, double nuDt) const
 }
 
 // The order of FluidSolver::step: advection from a copy of the field at the step's start (which
-// binding() also hands out), viscosity, the pen, projection.
+// binding() also hands out), viscosity, the pen, projection; then the halfway field (FluidFlow).
 void DeviceFluid::Impl::step(double dt)
 {
     queue.enqueueCopyBuffer(current.u, start.u, 0, 0, uCount * sizeof(cl_float));
@@ -658,6 +661,7 @@ void DeviceFluid::Impl::step(double dt)
     enqueue(queue, divergence);
     pressure.solve(iterationCap(nx, ny));
     enqueue(queue, gradient);
+    enqueue(queue, halfway);
 }
 
 void DeviceFluid::Impl::diffuse(double dt)
@@ -747,6 +751,7 @@ void DeviceFluid::writeVelocity(const MacVelocity& velocity)
             writeFloats(m->queue, field->u, velocity.u);
             writeFloats(m->queue, field->v, velocity.v);
         }
+        enqueue(m->queue, m->halfway);  // halfway between the field and itself: the field
         // As FluidSolver::setVelocity: the warm-start pressure belongs to the old history; dropping
         // it makes every later step a function of this velocity alone.
         m->pressure.clearSolution();

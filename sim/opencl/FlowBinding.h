@@ -2,15 +2,17 @@
 // The contract between the flow and the contour kernels on the device.
 //
 // Every contour kernel that needs the velocity takes, in this order, the arguments
-//     __global const float* u0, __global const float* v0,   // staggered field at time t0
+//     __global const float* u0, __global const float* v0,   // staggered field at time t0, then
+//                                                           // (fluid) the field halfway to t1
 //     __global const float* u1, __global const float* v1,   // staggered field at time t1
 //     int nx, int ny, float hx, float hy, float t0, float t1
 // (FLOW_ARGS in flow.h.cl) and samples through
 //     float2 flowVelocity(FLOW_PARAMS, float2 p, float t);
 //     float  flowVorticity(FLOW_PARAMS, float2 p, float t);
 // The program prepends one definition of these two functions: flow_fluid.cl (bilinear MAC
-// sampling, linear in time between t0 and t1, as sim/FluidFlow) or the analytic flow's
-// expressions translated to OpenCL C (sim/opencl/AnalyticSource). Analytic flows ignore the
+// sampling, linear in time between t0 and t1, as sim/FluidFlow, with the halfway field after the
+// start field in u0 and v0 so that RK4's middle stages sample one field, not two) or the analytic
+// flow's expressions translated to OpenCL C (sim/opencl/AnalyticSource). Analytic flows ignore the
 // buffers, which are then 1-element placeholders.
 #include "sim/opencl/OpenCl.h"
 

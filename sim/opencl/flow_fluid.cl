@@ -2,9 +2,10 @@
 // sampled as sim/FluidSolver.h samples it (MacVelocity::sample and ::vorticity, same clamping and
 // corner differences), in float32, and blended linearly in time between the field at the step's
 // start (u0, v0 at t0) and at its end (u1, v1 at t1) as sim/FluidFlow does, so RK4's mid-step
-// samples (eq. 1) see the flow of that moment. Comes after flow.h.cl; fluid.cl traces through the
-// same helpers. Every helper is force-inlined: PoCL's vectoriser gives up on kernels that call
-// large functions that are not inlined.
+// samples (eq. 1) see the flow of that moment. u0 and v0 hold, after the start field, the field
+// halfway through the step (FluidFlow's m_middle; DeviceFluid keeps it), which answers s = ½ alone.
+// Comes after flow.h.cl; fluid.cl traces through the same helpers. Every helper is force-inlined:
+// PoCL's vectoriser gives up on kernels that call large functions that are not inlined.
 
 #ifndef VF_INLINE
 #define VF_INLINE inline __attribute__((always_inline))
@@ -88,20 +89,39 @@ VF_INLINE float macVorticity(__global const float* u, __global const float* v, i
     return dv / hx - du / hy;
 }
 
+// The halfway field, stored after the start field.
+VF_INLINE __global const float* macHalfwayU(__global const float* u0, int nx, int ny)
+{
+    return u0 + (nx + 1) * ny;
+}
+
+VF_INLINE __global const float* macHalfwayV(__global const float* v0, int nx, int ny)
+{
+    return v0 + nx * (ny + 1);
+}
+
 // How far t is from t0 to t1, clamped to [0, 1]; 1 (the end field) when the span is empty, as
-// FluidFlow::blend.
+// FluidFlow::blend. The midpoint as rungeKutta4 (contours.cl) computes it is exactly ½: in float,
+// (t - t0) / span rounds away from ½ at most times, and RK4's middle stages would blend two fields
+// instead of sampling the halfway one.
 VF_INLINE float macBlend(float t0, float t1, float t)
 {
     const float span = t1 - t0;
-    return span > 0.0f ? clamp((t - t0) / span, 0.0f, 1.0f) : 1.0f;
+    if (!(span > 0.0f))
+        return 1.0f;
+    return t == t0 + 0.5f * span ? 0.5f : clamp((t - t0) / span, 0.0f, 1.0f);
 }
 
+// The velocity `s` of the way through the step. RK4 asks at s = 0, ½, ½, 1, each answered by one
+// field (FluidFlow::interpolate); the work-items of a launch share t, so the branches agree.
 VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float t)
 {
     const float s = macBlend(t0, t1, t);
     const float gx = p.x / hx, gy = p.y / hy;
-    float x = macSampleU(u1, nx, ny, gx, gy), y = macSampleV(v1, nx, ny, gx, gy);
-    if (s != 1.0f) {
+    __global const float* u = s == 0.0f ? u0 : s == 0.5f ? macHalfwayU(u0, nx, ny) : u1;
+    __global const float* v = s == 0.0f ? v0 : s == 0.5f ? macHalfwayV(v0, nx, ny) : v1;
+    float x = macSampleU(u, nx, ny, gx, gy), y = macSampleV(v, nx, ny, gx, gy);
+    if (s != 0.0f && s != 0.5f && s != 1.0f) {
         const float x0 = macSampleU(u0, nx, ny, gx, gy), y0 = macSampleV(v0, nx, ny, gx, gy);
         x = x0 + s * (x - x0);
         y = y0 + s * (y - y0);
@@ -112,6 +132,8 @@ VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float t)
 VF_INLINE float flowVorticity(FLOW_PARAMS, float2 p, float t)
 {
     const float s = macBlend(t0, t1, t);
+    if (s == 0.5f)
+        return macVorticity(macHalfwayU(u0, nx, ny), macHalfwayV(v0, nx, ny), nx, ny, hx, hy, p);
     const float end = macVorticity(u1, v1, nx, ny, hx, hy, p);
     if (s == 1.0f)
         return end;
