@@ -7,17 +7,6 @@
 
 namespace vf::sim {
 
-double discreteCurvature(Vec2 before, Vec2 at, Vec2 after)
-{
-    // Menger curvature, 1 / radius of the circle through the three points: exact on circles, and
-    // one square root instead of an atan2 in the hottest loop of the spacing.
-    const Vec2 e0 = at - before, e1 = after - at, chord = after - before;
-    const double denominator = std::sqrt(glm::dot(e0, e0) * glm::dot(e1, e1) * glm::dot(chord, chord));
-    return denominator > 0.0 ? 2.0 * std::abs(e0.x * e1.y - e0.y * e1.x) / denominator : 0.0;
-}
-
-namespace {
-
 std::vector<double> gaussianWeights(int radius)
 {
     const double sigma = std::max(0.5, radius / 2.0);
@@ -29,6 +18,17 @@ std::vector<double> gaussianWeights(int radius)
         x /= sum;
     return w;
 }
+
+double discreteCurvature(Vec2 before, Vec2 at, Vec2 after)
+{
+    // Menger curvature, 1 / radius of the circle through the three points: exact on circles, and
+    // one square root instead of an atan2 in the hottest loop of the spacing.
+    const Vec2 e0 = at - before, e1 = after - at, chord = after - before;
+    const double denominator = std::sqrt(glm::dot(e0, e0) * glm::dot(e1, e1) * glm::dot(chord, chord));
+    return denominator > 0.0 ? 2.0 * std::abs(e0.x * e1.y - e0.y * e1.x) / denominator : 0.0;
+}
+
+namespace {
 
 // Eq. 6, cyclic along the closed contour. The contour is copied with `radius` values wrapped on
 // each side, so the window itself needs no index arithmetic.

@@ -6,6 +6,9 @@
 
 namespace vf::sim {
 
+// The normalised Gaussian window of eq. 6 over 2·radius + 1 vertices, σ = radius / 2.
+std::vector<double> gaussianWeights(int radius);
+
 // Discrete curvature at vertex i (1/length): the Menger curvature of it and its two neighbours.
 double discreteCurvature(Vec2 before, Vec2 at, Vec2 after);
 

@@ -1,5 +1,7 @@
 #include "sim/opencl/DeviceContours.h"
 
+#include "sim/SpacingField.h"
+
 #include "sim/opencl/KernelSources.h"
 #include "sim/opencl/Launch.h"
 #include "sim/opencl/Scan.h"
@@ -93,20 +95,6 @@ struct Snapshot {
 bool isComplete(const cl::Event& event)
 {
     return event.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() <= CL_COMPLETE;
-}
-
-std::vector<float> gaussianWeights(int radius)
-{
-    // As SpacingField (eq. 6): σ = w/2, normalised.
-    const double sigma = std::max(0.5, radius / 2.0);
-    std::vector<double> w(2 * radius + 1);
-    double sum = 0.0;
-    for (int k = -radius; k <= radius; ++k)
-        sum += w[k + radius] = std::exp(-0.5 * k * k / (sigma * sigma));
-    std::vector<float> weights;
-    for (double x : w)
-        weights.push_back(float(x / sum));
-    return weights;
 }
 
 template <typename F>
@@ -225,7 +213,8 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
                                 {&correctArea, "correctArea"}})
         *kernel = cl::Kernel(program, name);
 
-    std::vector<float> w = gaussianWeights(smoothingRadius);
+    const std::vector<double> exact = gaussianWeights(smoothingRadius);  // eq. 6, as SpacingField
+    std::vector<float> w(exact.begin(), exact.end());
     weights = cl::Buffer(device.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, w.size() * sizeof(float), w.data());
     status = buffer(statusWords * sizeof(cl_uint));
 }

@@ -2,6 +2,7 @@
 // through QProcess: exit codes, the one-line error contract, what is (and is not) written, the
 // files read back by an XML parser and by the real readers (qpdf, Ghostscript, pdftoppm), the
 // stats JSON against the geometry, and determinism of the reference backend.
+#include "../TestFiles.h"
 #include "../render/SvgReadBack.h"
 #include "../render/TestGeometry.h"
 
@@ -88,17 +89,8 @@ QString checkDone(const CliResult& r)
     return r.exitCode == 0 && quiet ? QString() : QStringLiteral("expected success: ") + describe(r);
 }
 
-QByteArray readAll(const QString& fileName)
-{
-    QFile file(fileName);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-bool writeFile(const QString& fileName, const QByteArray& content)
-{
-    QFile file(fileName);
-    return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
-}
+using test::readAll;
+using test::writeFile;
 
 QJsonObject readJson(const QString& fileName) { return QJsonDocument::fromJson(readAll(fileName)).object(); }
 

@@ -1,6 +1,7 @@
 // Export formats end to end: what the files contain, read back by our own parser and by the real
 // readers (xmllint, rsvg-convert, qpdf, pdftoppm, Ghostscript), and atomic replacement on failure.
 // Runs with a QCoreApplication only (QTEST_GUILESS_MAIN): PNG export must not need a GUI.
+#include "../TestFiles.h"
 #include "SvgReadBack.h"
 #include "TestGeometry.h"
 
@@ -112,17 +113,8 @@ Run run(const QString& program, const QStringList& arguments)
         QVERIFY2(error_.isEmpty(), qPrintable(error_));                                                   \
     } while (false)
 
-QByteArray readAll(const QString& fileName)
-{
-    QFile file(fileName);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-bool writeFile(const QString& fileName, const QByteArray& content)
-{
-    QFile file(fileName);
-    return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
-}
+using test::readAll;
+using test::writeFile;
 
 // Accepts `budget` bytes, then fails every write, like a full disk.
 class FailingDevice final : public QIODevice {
