@@ -280,11 +280,11 @@ std::string analyticFlowSource(const std::string& u, const std::string& v)
     // differences of nearby values lose digits fast; 1e-3 keeps about four good digits.
     return "inline __attribute__((always_inline)) float analyticU(float x, float y, float t) { return " + uC + "; }\n"
            "inline __attribute__((always_inline)) float analyticV(float x, float y, float t) { return " + vC + "; }\n"
-           "inline __attribute__((always_inline)) float2 flowVelocity(FLOW_PARAMS, float2 p, float t)\n"
-           "{ return (float2)(analyticU(p.x, p.y, t), analyticV(p.x, p.y, t)); }\n"
-           "inline __attribute__((always_inline)) float flowVorticity(FLOW_PARAMS, float2 p, float t)\n"
+           "inline __attribute__((always_inline)) float2 flowVelocity(FLOW_PARAMS, float2 p, float s)\n"
+           "{ const float t = t0 + s * dt; return (float2)(analyticU(p.x, p.y, t), analyticV(p.x, p.y, t)); }\n"
+           "inline __attribute__((always_inline)) float flowVorticity(FLOW_PARAMS, float2 p, float s)\n"
            "{\n"
-           "    const float h = 1e-3f;\n"
+           "    const float t = t0 + s * dt, h = 1e-3f;\n"
            "    return (analyticV(p.x + h, p.y, t) - analyticV(p.x - h, p.y, t)) / (2.0f * h)\n"
            "         - (analyticU(p.x, p.y + h, t) - analyticU(p.x, p.y - h, t)) / (2.0f * h);\n"
            "}\n";

@@ -122,8 +122,8 @@ struct DeviceContours::Impl {
     Grid grid() const;
     Motion flowMotion() const { return Motion{motionFlow, {{0.0f, 0.0f}}, 0.0f, cl_int(settings.timeRewinding)}; }
 
-    bool move(const FlowBinding& flow, const Motion& motion, double spacingTime);
-    void computeSpacing(const FlowBinding& flow, double t);
+    bool move(const FlowBinding& flow, const Motion& motion);
+    void computeSpacing(const FlowBinding& flow);
     void buildGrid(const Grid& grid);
     bool refine(const FlowBinding& flow, const Motion& motion);
     struct Pass {
@@ -291,13 +291,13 @@ Grid DeviceContours::Impl::grid() const
     return {cl_float(settings.proximityRadius()), (bits + 1) / 2, bits / 2};
 }
 
-bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, double spacingTime)
+bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion)
 {
     if (vertices == 0)
         return true;
     queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
     launch(queue, advect, vertices, flow, motion, front.motion, cl_uint(vertices), status);
-    computeSpacing(flow, spacingTime);
+    computeSpacing(flow);
     const bool withinBudget = refine(flow, motion);
     if (settings.areaCorrection)
         correctAreas();
@@ -308,7 +308,7 @@ bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, d
 // then each grid entry's distance to another part; back.contour the arc lengths, then the raw
 // spacing; back.motion the grid entries; `work` the bucket starts; tileOffset the vertices' ranks
 // within their buckets, then their slots in the grid.
-void DeviceContours::Impl::computeSpacing(const FlowBinding& flow, double t)
+void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
 {
     const auto n = cl_uint(vertices);
     if (!settings.adaptive) {
@@ -320,7 +320,7 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow, double t)
         buildGrid(g);
         launch(queue, nearestOtherPart, vertices, g, n, work, back.motion, contourLength, back.spacing);
     }
-    launch(queue, rawSpacing, vertices, flow, cl_float(t), front.motion, front.contour, contourOffset, contourCount, n,
+    launch(queue, rawSpacing, vertices, flow, front.motion, front.contour, contourOffset, contourCount, n,
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
            cl_float(settings.proximityLength()), cl_int(settings.proximity), tileOffset, back.spacing, back.contour);
     launch(queue, smoothSpacing, vertices, back.contour, front.contour, contourOffset, contourCount, n, weights,
@@ -561,14 +561,14 @@ void DeviceContours::growTargetAreasAround(Vec2 p, double area)
     });
 }
 
-double DeviceContours::strainInSpacings(const FlowBinding& flow, double t, double dt)
+double DeviceContours::strainInSpacings(const FlowBinding& flow, double dt)
 {
     return guarded([&] {
         if (m->vertices == 0)
             return 0.0;
         cl::CommandQueue& q = m->queue;
         q.enqueueFillBuffer(m->status, cl_uint(0), statusStrain * sizeof(cl_uint), sizeof(cl_uint));
-        launch(q, m->strain, m->vertices, flow, cl_float(t), cl_float(dt), m->front.motion, m->front.spacing,
+        launch(q, m->strain, m->vertices, flow, cl_float(dt), m->front.motion, m->front.spacing,
                m->front.contour, m->contourOffset, m->contourCount, cl_uint(m->vertices), m->status);
         float worst = 0.0f;
         q.enqueueReadBuffer(m->status, CL_TRUE, statusStrain * sizeof(cl_uint), sizeof(float), &worst);
@@ -578,17 +578,17 @@ double DeviceContours::strainInSpacings(const FlowBinding& flow, double t, doubl
 
 bool DeviceContours::advect(const FlowBinding& flow)
 {
-    return guarded([&] { return m->move(flow, m->flowMotion(), flow.t1); });
+    return guarded([&] { return m->move(flow, m->flowMotion()); });
 }
 
-bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow, double t)
+bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
 {
     return guarded([&] {
         Motion push = m->flowMotion();
         push.kind = motionDrop;
         push.centre = {{cl_float(center.x), cl_float(center.y)}};
         push.radius = cl_float(radius);
-        return m->move(flow, push, t);
+        return m->move(flow, push);
     });
 }
 

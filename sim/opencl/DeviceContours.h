@@ -25,8 +25,9 @@ public:
     void addContour(int region, const Polygon& polygon);
     void growTargetAreasAround(Vec2 p, double area);
 
-    // As ContourTracker::strainInSpacings, for the substep count: one scalar comes back.
-    double strainInSpacings(const FlowBinding& flow, double t, double dt);
+    // As ContourTracker::strainInSpacings for a step of dt, with the flow at the end of `flow`'s
+    // span, for the substep count: one scalar comes back.
+    double strainInSpacings(const FlowBinding& flow, double dt);
 
     // RK4 from flow.t0 to flow.t1 through `flow`, then spacing, refinement, area correction.
     // False when refinement stopped at max_vertices (or at what the device's memory holds); the
@@ -35,8 +36,9 @@ public:
     bool advect(const FlowBinding& flow);
 
     // The drop's push P → C + (P−C)·sqrt(1 + r²/|P−C|²) as the motion, then refinement (split
-    // vertices land on the pushed curve). `flow` and `t` feed the spacing's vorticity term.
-    bool drop(Vec2 center, double radius, const FlowBinding& flow, double t);
+    // vertices land on the pushed curve). `flow` at the end of its span feeds the spacing's
+    // vorticity term.
+    bool drop(Vec2 center, double radius, const FlowBinding& flow);
 
     std::size_t vertexCount() const;  // known on the host after every step (one scalar read)
 

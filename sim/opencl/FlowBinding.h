@@ -5,10 +5,12 @@
 //     __global const float* u0, __global const float* v0,   // staggered field at time t0, then
 //                                                           // (fluid) the field halfway to t1
 //     __global const float* u1, __global const float* v1,   // staggered field at time t1
-//     int nx, int ny, float hx, float hy, float t0, float t1
+//     int nx, int ny, float hx, float hy, float t0, float dt
 // (FLOW_ARGS in flow.h.cl) and samples through
-//     float2 flowVelocity(FLOW_PARAMS, float2 p, float t);
-//     float  flowVorticity(FLOW_PARAMS, float2 p, float t);
+//     float2 flowVelocity(FLOW_PARAMS, float2 p, float s);
+//     float  flowVorticity(FLOW_PARAMS, float2 p, float s);
+// where s is how far through the span [t0, t0 + dt] (0 … 1; an empty span means its end). The
+// span's length is computed here in double: t1 − t0 in float would lose digits as time grows.
 // The program prepends one definition of these two functions: flow_fluid.cl (bilinear MAC
 // sampling, linear in time between t0 and t1, as sim/FluidFlow, with the halfway field after the
 // start field in u0 and v0 so that RK4's middle stages sample one field, not two) or the analytic
@@ -36,7 +38,7 @@ struct FlowBinding {
         kernel.setArg(first++, hx);
         kernel.setArg(first++, hy);
         kernel.setArg(first++, float(t0));
-        kernel.setArg(first++, float(t1));
+        kernel.setArg(first++, float(t1 - t0));
         return first;
     }
 };

@@ -63,7 +63,7 @@ DropReport OpenClSimulation::drop(Vec2 center, double radius)
     // As ReferenceSimulation::drop: contours around the centre come to enclose the drop as well.
     const Polygon dropped = circle(center, radius, m_settings.tracking.maxSpacing);
     m_contours->growTargetAreasAround(center, signedArea(dropped));
-    const bool refined = m_contours->drop(center, radius, binding(m_time, m_time), m_time);
+    const bool refined = m_contours->drop(center, radius, binding(m_time, m_time));
     DropReport report;
     report.region = addRegion({dropped});
     report.vertexLimitReached = !refined || vertexCount() > m_settings.tracking.maxVertices;
@@ -79,7 +79,7 @@ void OpenClSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration
 StepReport OpenClSimulation::step(double dt)
 {
     StepReport report;
-    report.substeps = substepCount(m_contours->strainInSpacings(binding(m_time, m_time), m_time, dt),
+    report.substeps = substepCount(m_contours->strainInSpacings(binding(m_time, m_time), dt),
                                    m_settings.tracking);
     const double h = dt / report.substeps;
     for (int k = 0; k < report.substeps && !report.vertexLimitReached; ++k) {

@@ -63,14 +63,14 @@ VF_INLINE float cross2(float2 a, float2 b)
     return a.x * b.y - a.y * b.x;
 }
 
-// Eq. 1: one classic fourth-order Runge–Kutta step from t0 to t1.
+// Eq. 1: one classic fourth-order Runge–Kutta step over the flow's span [t0, t0 + dt].
 VF_INLINE float2 rungeKutta4(FLOW_PARAMS, float2 p)
 {
-    const float dt = t1 - t0, h = 0.5f * dt, middle = t0 + h;
-    const float2 k1 = flowVelocity(FLOW_PASS, p, t0);
-    const float2 k2 = flowVelocity(FLOW_PASS, p + h * k1, middle);
-    const float2 k3 = flowVelocity(FLOW_PASS, p + h * k2, middle);
-    const float2 k4 = flowVelocity(FLOW_PASS, p + dt * k3, t1);
+    const float h = 0.5f * dt;
+    const float2 k1 = flowVelocity(FLOW_PASS, p, 0.0f);
+    const float2 k2 = flowVelocity(FLOW_PASS, p + h * k1, 0.5f);
+    const float2 k3 = flowVelocity(FLOW_PASS, p + h * k2, 0.5f);
+    const float2 k4 = flowVelocity(FLOW_PASS, p + dt * k3, 1.0f);
     return p + (dt / 6.0f) * (k1 + 2.0f * k2 + 2.0f * k3 + k4);
 }
 
@@ -104,16 +104,17 @@ VF_KERNEL void advect(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, uint n, _
 
 VF_DEFINE_LOCAL_REDUCE(float, maxFloat, fmax)
 
-// Largest |u(v_b) − u(v_a)|·dt / d_e over the edges (ContourTracker::strainInSpacings). Each
-// vertex samples the flow once; the next vertex's velocity comes from its neighbour in the
-// work-group, sampled again only across a tile or a contour's closing edge.
-VF_KERNEL void strain(FLOW_ARGS, float t, float dt, __global const float4 *motion, __global const float *spacing,
+// Largest |u(v_b) − u(v_a)|·stepLength / d_e over the edges (ContourTracker::strainInSpacings),
+// with the flow at the end of its span. Each vertex samples the flow once; the next vertex's
+// velocity comes from its neighbour in the work-group, sampled again only across a tile or a
+// contour's closing edge.
+VF_KERNEL void strain(FLOW_ARGS, float stepLength, __global const float4 *motion, __global const float *spacing,
                       CONTOUR_ARGS, uint n, __global uint *status)
 {
     __local float2 velocity[VF_LOCAL];
     __local float scratch[VF_SCAN_SCRATCH];
     const uint i = get_global_id(0), lid = get_local_id(0);
-    const float2 u = i < n ? flowVelocity(FLOW_PASS, motion[i].xy, t) : (float2)(0.0f);
+    const float2 u = i < n ? flowVelocity(FLOW_PASS, motion[i].xy, 1.0f) : (float2)(0.0f);
     velocity[lid] = u;
     barrier(CLK_LOCAL_MEM_FENCE);
     float s = 0.0f;
@@ -121,8 +122,8 @@ VF_KERNEL void strain(FLOW_ARGS, float t, float dt, __global const float4 *motio
         const uint c = contourOf[i];
         const uint j = nextIn(i, contourOffset[c], contourCount[c]);
         const float2 uj =
-            j == i + 1 && lid + 1 < VF_LOCAL ? velocity[lid + 1] : flowVelocity(FLOW_PASS, motion[j].xy, t);
-        s = distance(u, uj) * dt / (0.5f * (spacing[i] + spacing[j]));
+            j == i + 1 && lid + 1 < VF_LOCAL ? velocity[lid + 1] : flowVelocity(FLOW_PASS, motion[j].xy, 1.0f);
+        s = distance(u, uj) * stepLength / (0.5f * (spacing[i] + spacing[j]));
     }
     const float worst = VF_LOCAL_REDUCE(maxFloat)(scratch, s);
     if (lid == 0)

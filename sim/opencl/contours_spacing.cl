@@ -156,7 +156,7 @@ VF_INLINE float mengerCurvature(float2 before, float2 at, float2 after)
 
 // d_max·exp(−|κ|·Lκ − |ω|/ω_ref)·(1 − exp(−dist/Lp)): eqs. 3, 4, 5 and 7 before smoothing.
 // With `proximity`, the distances come from nearestOtherPart, found through the vertex's grid slot.
-VF_KERNEL void rawSpacing(FLOW_ARGS, float t, __global const float4 *motion, CONTOUR_ARGS, uint n, float maxSpacing,
+VF_KERNEL void rawSpacing(FLOW_ARGS, __global const float4 *motion, CONTOUR_ARGS, uint n, float maxSpacing,
                           float curvatureLength, float vorticityScale, float proximityLength, int proximity,
                           __global const uint *slot, __global const float *gap, __global float *raw)
 {
@@ -167,7 +167,7 @@ VF_KERNEL void rawSpacing(FLOW_ARGS, float t, __global const float4 *motion, CON
     const float2 p = motion[i].xy;
     const float kappa = mengerCurvature(motion[previousIn(i, first, count)].xy, p, motion[nextIn(i, first, count)].xy);
     // exp(−a)·exp(−b) of eqs. 4 and 5 as one exponential.
-    float factor = exp(-kappa * curvatureLength - fabs(flowVorticity(FLOW_PASS, p, t)) / vorticityScale);
+    float factor = exp(-kappa * curvatureLength - fabs(flowVorticity(FLOW_PASS, p, 1.0f)) / vorticityScale);
     if (proximity) {
         const float distance = gap[slot[i]];
         if (distance >= 0.0f)

@@ -100,23 +100,19 @@ VF_INLINE __global const float* macHalfwayV(__global const float* v0, int nx, in
     return v0 + nx * (ny + 1);
 }
 
-// How far t is from t0 to t1, clamped to [0, 1]; 1 (the end field) when the span is empty, as
-// FluidFlow::blend. The midpoint as rungeKutta4 (contours.cl) computes it is exactly ½: in float,
-// (t - t0) / span rounds away from ½ at most times, and RK4's middle stages would blend two fields
-// instead of sampling the halfway one.
-VF_INLINE float macBlend(float t0, float t1, float t)
+// s clamped to [0, 1]; 1 (the end field) when the span is empty, as FluidFlow::blend. RK4
+// (contours.cl) passes its stages' s exactly (0, ½, 1), so its middle stages sample the halfway
+// field alone.
+VF_INLINE float macBlend(float dt, float s)
 {
-    const float span = t1 - t0;
-    if (!(span > 0.0f))
-        return 1.0f;
-    return t == t0 + 0.5f * span ? 0.5f : clamp((t - t0) / span, 0.0f, 1.0f);
+    return dt > 0.0f ? clamp(s, 0.0f, 1.0f) : 1.0f;
 }
 
 // The velocity `s` of the way through the step. RK4 asks at s = 0, ½, ½, 1, each answered by one
 // field (FluidFlow::interpolate); the work-items of a launch share t, so the branches agree.
-VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float t)
+VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float along)
 {
-    const float s = macBlend(t0, t1, t);
+    const float s = macBlend(dt, along);
     const float gx = p.x / hx, gy = p.y / hy;
     __global const float* u = s == 0.0f ? u0 : s == 0.5f ? macHalfwayU(u0, nx, ny) : u1;
     __global const float* v = s == 0.0f ? v0 : s == 0.5f ? macHalfwayV(v0, nx, ny) : v1;
@@ -129,9 +125,9 @@ VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float t)
     return (float2)(x, y);
 }
 
-VF_INLINE float flowVorticity(FLOW_PARAMS, float2 p, float t)
+VF_INLINE float flowVorticity(FLOW_PARAMS, float2 p, float along)
 {
-    const float s = macBlend(t0, t1, t);
+    const float s = macBlend(dt, along);
     if (s == 0.5f)
         return macVorticity(macHalfwayU(u0, nx, ny), macHalfwayV(v0, nx, ny), nx, ny, hx, hy, p);
     const float end = macVorticity(u1, v1, nx, ny, hx, hy, p);

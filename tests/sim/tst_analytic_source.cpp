@@ -110,7 +110,7 @@ private slots:
             kernel.setArg(arg++, placeholder);
         for (int i : {1, 1})
             kernel.setArg(arg++, i);
-        for (float f : {1.0f, 1.0f, 0.0f, 0.0f})
+        for (float f : {1.0f, 1.0f, 0.0f, 1.0f})  // hx, hy, and the span [0, 1]: s is the time itself
             kernel.setArg(arg++, f);
         kernel.setArg(arg++, input);
         kernel.setArg(arg++, output);

@@ -52,21 +52,23 @@ TestFlow hostFlow(FlowId id)
 
 // sinpi/cospi rather than sin(pi * x): PoCL's scalar sin is several times slower.
 const char* deviceFlowSource = R"CL(
-inline __attribute__((always_inline)) float2 flowVelocity(FLOW_PARAMS, float2 p, float t)
+inline __attribute__((always_inline)) float2 flowVelocity(FLOW_PARAMS, float2 p, float s)
 {
+    const float t = t0 + s * dt;
     if (nx == 0) {
-        const float sx = sinpi(p.x), sy = sinpi(p.y), s = cospi(t / 8.0f);
-        return (float2)(-sx * sx * sinpi(2.0f * p.y) * s, sy * sy * sinpi(2.0f * p.x) * s);
+        const float sx = sinpi(p.x), sy = sinpi(p.y), reversal = cospi(t / 8.0f);
+        return (float2)(-sx * sx * sinpi(2.0f * p.y) * reversal, sy * sy * sinpi(2.0f * p.x) * reversal);
     }
     if (nx == 1)
         return (float2)(-M_PI_F * (p.y - 0.5f), M_PI_F * (p.x - 0.5f));
     return (float2)(0.5f - p.x, 0.5f - p.y);
 }
-inline __attribute__((always_inline)) float flowVorticity(FLOW_PARAMS, float2 p, float t)
+inline __attribute__((always_inline)) float flowVorticity(FLOW_PARAMS, float2 p, float s)
 {
+    const float t = t0 + s * dt;
     if (nx == 0) {
-        const float sx = sinpi(p.x), sy = sinpi(p.y), s = cospi(t / 8.0f);
-        return 2.0f * M_PI_F * s * (sy * sy * cospi(2.0f * p.x) + sx * sx * cospi(2.0f * p.y));
+        const float sx = sinpi(p.x), sy = sinpi(p.y), reversal = cospi(t / 8.0f);
+        return 2.0f * M_PI_F * reversal * (sy * sy * cospi(2.0f * p.x) + sx * sx * cospi(2.0f * p.y));
     }
     return nx == 1 ? 2.0f * M_PI_F : 0.0f;
 }
@@ -117,7 +119,7 @@ public:
     bool step(double dt)
     {
         bool within = true;
-        const int n = sim::substepCount(m_contours.strainInSpacings(binding(m_time, m_time), m_time, dt), m_settings);
+        const int n = sim::substepCount(m_contours.strainInSpacings(binding(m_time, m_time), dt), m_settings);
         for (int k = 0; k < n && within; ++k) {
             within = m_contours.advect(binding(m_time, m_time + dt / n));
             m_time += dt / n;
@@ -138,7 +140,7 @@ public:
     {
         const Polygon dropped = sim::circle(centre, radius, m_settings.maxSpacing);
         m_contours.growTargetAreasAround(centre, sim::signedArea(dropped));
-        m_contours.drop(centre, radius, binding(m_time, m_time), m_time);
+        m_contours.drop(centre, radius, binding(m_time, m_time));
         if (m_withReference) {
             m_tracker.growTargetAreasAround(centre, sim::signedArea(dropped));
             const double r2 = radius * radius;

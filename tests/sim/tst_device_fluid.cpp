@@ -444,7 +444,11 @@ void TestDeviceFluid::flowSamplingMatchesReference()
         points.insert(points.end(), {float(x), float(y), float(t0 + 0.05 * ((k % 7) - 1))});
     }
     for (const double t1 : {0.45, t0}) {
-        const std::vector<double> got = sampleOnDevice(fluid.binding(t0, t1), points);
+        // The samplers take how far through the span a time is; an empty span means its end.
+        std::vector<float> fractions = points;
+        for (std::size_t k = 2; k < fractions.size(); k += 3)
+            fractions[k] = t1 > t0 ? float((points[k] - t0) / (t1 - t0)) : 0.0f;
+        const std::vector<double> got = sampleOnDevice(fluid.binding(t0, t1), fractions);
         for (std::size_t k = 0; k < points.size(); k += 3) {
             const Vec2 p{points[k], points[k + 1]};
             const FlowSample expected = blended(start, end, t0, t1, p, points[k + 2]);
@@ -465,8 +469,8 @@ void TestDeviceFluid::flowSamplingMatchesReference()
     }
 }
 
-// The flow and its vorticity at each (x, y, t) of `points`, sampled by flow_fluid.cl as the contour
-// kernels sample it.
+// The flow and its vorticity at each (x, y, s) of `points`, s how far through the binding's span,
+// sampled by flow_fluid.cl as the contour kernels sample it.
 std::vector<double> TestDeviceFluid::sampleOnDevice(const FlowBinding& flow,
                                                     const std::vector<float>& points)
 {
