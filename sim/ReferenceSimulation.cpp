@@ -37,7 +37,7 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
     return m_regionCount++;
 }
 
-DropReport ReferenceSimulation::drop(Vec2 center, double radius)
+bool ReferenceSimulation::pushOutward(Vec2 center, double radius)
 {
     const double r2 = radius * radius;
     const MotionMap push = [center, radius, r2](Vec2 p) {
@@ -47,15 +47,7 @@ DropReport ReferenceSimulation::drop(Vec2 center, double radius)
             return center + Vec2(radius, 0.0);  // the centre itself: any direction is as good
         return center + d * std::sqrt(1.0 + r2 / l2);
     };
-    // A contour around the centre ends up enclosing the new drop too: π r² more, counted as the
-    // drop's own polygon so that the ring it leaves keeps exactly the area it had.
-    const Polygon dropped = circle(center, radius, m_settings.tracking.maxSpacing);
-    m_tracker.growTargetAreasAround(center, signedArea(dropped));
-    const bool refined = m_tracker.applyMotion(push, *m_flow, time());
-    DropReport report;
-    report.region = addRegion({dropped});
-    report.vertexLimitReached = !refined || vertexCount() > m_settings.tracking.maxVertices;
-    return report;
+    return m_tracker.applyMotion(push, *m_flow, time());
 }
 
 void ReferenceSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration)

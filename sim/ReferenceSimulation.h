@@ -18,13 +18,16 @@ public:
     std::string backendName() const override { return "reference"; }
     const SimulationSettings& settings() const override { return m_settings; }
     int addRegion(const std::vector<Polygon>& contours) override;
-    DropReport drop(Vec2 center, double radius) override;
     void stylus(Vec2 from, Vec2 to, double radius, double duration) override;
     StepReport step(double dt) override;
     double time() const override { return m_flow->time(); }
     std::size_t vertexCount() const override { return m_tracker.vertexCount(); }
     int regionCount() const override { return m_regionCount; }
     std::vector<Contour> contours() const override { return m_tracker.contours(); }
+
+protected:
+    void growTargetAreasAround(Vec2 p, double area) override { m_tracker.growTargetAreasAround(p, area); }
+    bool pushOutward(Vec2 center, double radius) override;
 
 private:
     SimulationSettings m_settings;

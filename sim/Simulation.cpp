@@ -36,6 +36,19 @@ int substepCount(double strain, const TrackingSettings& tracking)
     return int(std::clamp(std::ceil(strain / tracking.substepStrain), 1.0, double(tracking.maxSubsteps)));
 }
 
+DropReport Simulation::drop(Vec2 center, double radius)
+{
+    // A contour around the centre ends up enclosing the new drop too: π r² more, counted as the
+    // drop's own polygon so that the ring it leaves keeps exactly the area it had.
+    const Polygon dropped = circle(center, radius, settings().tracking.maxSpacing);
+    growTargetAreasAround(center, signedArea(dropped));
+    const bool refined = pushOutward(center, radius);
+    DropReport report;
+    report.region = addRegion({dropped});
+    report.vertexLimitReached = !refined || vertexCount() > settings().tracking.maxVertices;
+    return report;
+}
+
 std::vector<std::vector<Polygon>> Simulation::regions() const
 {
     std::vector<std::vector<Polygon>> out(regionCount());

@@ -42,7 +42,7 @@ public:
     // which pushes old ink outward and keeps its area, then a circle of radius r at C becomes a new
     // region, whose index is returned. Regions are painted in order, so ink the drop lands in
     // shows as a ring around it: its contour then encloses the drop too (area + π r²).
-    virtual DropReport drop(Vec2 center, double radius) = 0;
+    DropReport drop(Vec2 center, double radius);
     // The stylus moved from `from` to `to` during `duration` seconds; acts during the next step.
     // Only a fluid flow responds.
     virtual void stylus(Vec2 from, Vec2 to, double radius, double duration) = 0;
@@ -59,6 +59,13 @@ public:
 
     // Every region's contours, indexed by region.
     std::vector<std::vector<Polygon>> regions() const;
+
+protected:
+    // The two backend parts of drop(): raise the area-correction target of every contour winding
+    // around `p` by `area`, and move every contour by the drop's push, refining under it (false
+    // when refinement stopped at max_vertices).
+    virtual void growTargetAreasAround(Vec2 p, double area) = 0;
+    virtual bool pushOutward(Vec2 center, double radius) = 0;
 };
 
 // Throws std::invalid_argument with a one-line message for settings no backend can run.

@@ -58,16 +58,9 @@ int OpenClSimulation::addRegion(const std::vector<Polygon>& contours)
     return m_regionCount++;
 }
 
-DropReport OpenClSimulation::drop(Vec2 center, double radius)
+bool OpenClSimulation::pushOutward(Vec2 center, double radius)
 {
-    // As ReferenceSimulation::drop: contours around the centre come to enclose the drop as well.
-    const Polygon dropped = circle(center, radius, m_settings.tracking.maxSpacing);
-    m_contours->growTargetAreasAround(center, signedArea(dropped));
-    const bool refined = m_contours->drop(center, radius, binding(m_time, m_time));
-    DropReport report;
-    report.region = addRegion({dropped});
-    report.vertexLimitReached = !refined || vertexCount() > m_settings.tracking.maxVertices;
-    return report;
+    return m_contours->drop(center, radius, binding(m_time, m_time));
 }
 
 void OpenClSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration)

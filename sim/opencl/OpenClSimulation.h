@@ -23,13 +23,16 @@ public:
     std::string deviceName() const { return m_device.name(); }
     const SimulationSettings& settings() const override { return m_settings; }
     int addRegion(const std::vector<Polygon>& contours) override;
-    DropReport drop(Vec2 center, double radius) override;
     void stylus(Vec2 from, Vec2 to, double radius, double duration) override;
     StepReport step(double dt) override;
     double time() const override { return m_time; }
     std::size_t vertexCount() const override { return m_contours->vertexCount(); }
     int regionCount() const override { return m_regionCount; }
     std::vector<Contour> contours() const override { return m_contours->read(); }
+
+protected:
+    void growTargetAreasAround(Vec2 p, double area) override { m_contours->growTargetAreasAround(p, area); }
+    bool pushOutward(Vec2 center, double radius) override;
 
 private:
     // The flow over [t0, t1]: the fluid's fields at the last step's ends, or the analytic flow.
