@@ -33,6 +33,8 @@ struct MacVelocity {
 
     Vec2 sample(Vec2 p) const;      // bilinear, clamped to the canvas
     double vorticity(Vec2 p) const; // dv/dx - du/dy, bilinear from cell corners
+
+    friend bool operator==(const MacVelocity&, const MacVelocity&) = default;
 };
 
 class FluidSolver {

@@ -15,6 +15,8 @@ struct StylusSegment {
         const double a = double(k) / n, b = double(k + 1) / n;
         return {from + a * (to - from), from + b * (to - from), radius, duration / n};
     }
+
+    friend bool operator==(const StylusSegment&, const StylusSegment&) = default;
 };
 
 } // namespace vf::sim

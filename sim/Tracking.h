@@ -42,6 +42,8 @@ struct Contour {
     std::vector<Vec2> previous;
     std::vector<double> spacing;  // d_i of eq. 3 after smoothing (eq. 6)
     double targetArea = 0.0;      // for the optional area correction
+
+    friend bool operator==(const Contour&, const Contour&) = default;
 };
 
 } // namespace vf::sim

@@ -1,0 +1,39 @@
+#pragma once
+// A project (*.vfproj, docs/project-format.md): everything needed to reopen a piece of work
+// exactly — its settings, the regions as they are now, the simulation state, and the undo history
+// with the states it restores.
+#include "model/Regions.h"
+#include "model/Scene.h"
+#include "sim/SimulationState.h"
+
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+namespace vf::model {
+
+// One undoable user action. `before`/`after` are the simulation states at its start and end;
+// both are null for a command that leaves the simulation alone (a recolour, a rename, a reorder).
+// Consecutive commands usually share a state (one's end is the next one's start): the writer
+// stores each distinct state once.
+struct HistoryEntry {
+    QString text;  // as shown in the History dock
+    RegionTable regionsBefore;
+    RegionTable regionsAfter;
+    std::shared_ptr<const sim::SimulationState> before;
+    std::shared_ptr<const sim::SimulationState> after;
+};
+
+struct Project {
+    // Canvas, flow, time and tracking settings in use, and the regions and scripted strokes of the
+    // scene the work started from.
+    Scene scene;
+    RegionTable regions;          // as they are now
+    sim::SimulationState state;   // as it is now
+    std::int64_t steps = 0;       // steps taken so far
+    std::vector<HistoryEntry> history;
+    int historyIndex = 0;         // entries [0, historyIndex) are done, the rest undone (redoable)
+};
+
+} // namespace vf::model
