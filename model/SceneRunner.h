@@ -3,9 +3,8 @@
 // their times, and hands out the picture. Used by the headless command line and the app.
 #include "model/Drawing.h"
 #include "model/Scene.h"
+#include "model/SceneScript.h"
 #include "sim/Simulation.h"
-
-#include <QSet>
 
 #include <functional>
 #include <memory>
@@ -34,22 +33,9 @@ public:
     Drawing drawing() const;
 
 private:
-    void applyDrops(double from, double to);
-    void applyStylus(double from, double to);
-    QString unusedDropName() const;
-
-    struct RegionLook {
-        QString name;
-        QColor color;
-        bool visible = true;
-    };
-
     Scene m_scene;
+    SceneScript m_script;
     std::unique_ptr<sim::Simulation> m_simulation;
-    std::vector<RegionLook> m_looks;  // indexed by simulation region
-    std::vector<bool> m_dropDone;     // per stroke
-    QSet<QString> m_takenNames;       // of regions and drops, so every region's name is unique
-    int m_dropsLanded = 0;
     std::int64_t m_steps = 0;
     double m_clock = 0.0;
     bool m_vertexLimitReached = false;

@@ -1,0 +1,66 @@
+#include "model/SceneScript.h"
+
+#include <QSet>
+
+#include <algorithm>
+
+namespace vf::model {
+
+SceneScript::SceneScript(const Scene& scene)
+    : m_startingRegions(int(scene.regions.size()))
+{
+    for (const Stroke& s : scene.strokes) {
+        if (const auto* drop = std::get_if<DropStroke>(&s))
+            m_drops.push_back(*drop);
+        else
+            m_strokes.push_back(std::get<StylusStroke>(s));
+    }
+    std::stable_sort(m_drops.begin(), m_drops.end(), [](const DropStroke& a, const DropStroke& b) { return a.time < b.time; });
+
+    QSet<QString> taken;
+    for (const RegionSpec& r : scene.regions)
+        taken.insert(r.name);
+    for (const DropStroke& d : m_drops)
+        if (!d.name.isEmpty())
+            taken.insert(d.name);
+    auto unusedDropName = [&taken](int ordinal) {
+        // "drop N" for the N-th drop to land (counting from 1), skipping names a region or a named drop
+        // already has: region names become SVG ids and layer labels, so they stay unique.
+        for (int n = ordinal;; ++n)
+            if (const QString name = QStringLiteral("drop %1").arg(n); !taken.contains(name))
+                return name;
+    };
+
+    for (const RegionSpec& r : scene.regions)
+        m_looks.push_back({r.name, r.color, r.visible, int(m_looks.size())});
+    for (std::size_t i = 0; i < m_drops.size(); ++i) {
+        const QString name = m_drops[i].name.isEmpty() ? unusedDropName(int(i) + 1) : m_drops[i].name;
+        taken.insert(name);
+        m_looks.push_back({name, m_drops[i].color, true, int(m_looks.size())});
+    }
+}
+
+bool SceneScript::applyDrops(sim::Simulation& simulation, double from, double to) const
+{
+    bool limitReached = false;
+    for (const DropStroke& drop : m_drops)
+        if (drop.time > from && drop.time <= to)
+            limitReached = simulation.drop(drop.center, drop.radius).vertexLimitReached || limitReached;
+    return limitReached;
+}
+
+void SceneScript::applyStylus(sim::Simulation& simulation, double from, double to) const
+{
+    for (const StylusStroke& stylus : m_strokes) {
+        for (std::size_t k = 0; k + 1 < stylus.points.size(); ++k) {
+            const double t0 = stylus.times[k], t1 = stylus.times[k + 1];
+            const double a = std::max(from, t0), b = std::min(to, t1);
+            if (b <= a || t1 <= t0)
+                continue;
+            auto at = [&](double t) { return stylus.points[k] + (t - t0) / (t1 - t0) * (stylus.points[k + 1] - stylus.points[k]); };
+            simulation.stylus(at(a), at(b), stylus.radius, b - a);
+        }
+    }
+}
+
+} // namespace vf::model

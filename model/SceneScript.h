@@ -1,0 +1,36 @@
+#pragma once
+// The timed part of a scene: its drops and stylus strokes, played into a simulation as its time
+// passes. Stateless: what happens over (from, to] depends only on the interval, so the same script
+// plays on unchanged after a simulation is restored to an earlier state (the app's undo).
+#include "model/Regions.h"
+#include "model/Scene.h"
+#include "sim/Simulation.h"
+
+namespace vf::model {
+
+class SceneScript {
+public:
+    explicit SceneScript(const Scene& scene);
+
+    // The looks of the scene's regions and then of its drops, in the order they become simulation
+    // regions (drops by time, stable for equal times). Names are unique: unnamed drops are called
+    // "drop N", skipping names already taken.
+    const RegionTable& looks() const { return m_looks; }
+    int startingRegionCount() const { return m_startingRegions; }
+    int dropCount() const { return int(m_drops.size()); }
+
+    // Lands the drops due in (from, to], in order; returns whether one took the vertex count to
+    // tracking.max_vertices.
+    bool applyDrops(sim::Simulation& simulation, double from, double to) const;
+    // The stylus strokes' share of (from, to]: every piece of a pen path overlapping the interval
+    // acts with the part of it inside the interval.
+    void applyStylus(sim::Simulation& simulation, double from, double to) const;
+
+private:
+    std::vector<DropStroke> m_drops;  // in landing order
+    std::vector<StylusStroke> m_strokes;
+    RegionTable m_looks;
+    int m_startingRegions = 0;
+};
+
+} // namespace vf::model
