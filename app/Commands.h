@@ -1,5 +1,5 @@
 #pragma once
-// The headless commands of `vectorfluid` (DESIGN §3). Each returns the process exit code:
+// The commands of `vectorfluid` (DESIGN §3). Each returns the process exit code:
 // 0 done, 2 bad input (one line on stderr), 3 a limit was hit (what was done so far is written).
 #include <QStringList>
 
@@ -9,5 +9,7 @@ enum ExitCode { Done = 0, BadInput = 2, LimitHit = 3 };
 
 int renderCommand(const QStringList& arguments);
 int devicesCommand(const QStringList& arguments);
+// The desktop app (app/GuiMain.cpp): creates the QApplication, so it takes argc/argv.
+int guiMain(int argc, char** argv);
 
 } // namespace vf::app

@@ -1,4 +1,5 @@
 // `vectorfluid render SCENE ...`: run a scene headless and write files (DESIGN §3).
+#include "app/Backend.h"
 #include "app/Commands.h"
 #include "app/RenderOptions.h"
 #include "model/AtomicFile.h"
@@ -34,23 +35,11 @@ void fail(const QString& line)
     QTextStream(stderr) << "vectorfluid: " << line << '\n';
 }
 
-// The backend the options ask for. OpenCL is the default wherever a device can run the scene;
-// where none can, `notice` gets one line saying why (and a failed kernel build's log below it),
-// shown once the run is done, and the reference backend runs instead.
+// The backend the options ask for (app/Backend.h); a fallback notice is shown once the run is done.
 model::SimulationFactory backendFactory(const RenderOptions& options, QString& notice)
 {
-    return [&options, &notice](const sim::SimulationSettings& settings) -> std::unique_ptr<sim::Simulation> {
-        if (options.backend != QLatin1String("reference")) {
-            try {
-                return std::make_unique<sim::opencl::OpenClSimulation>(settings, options.device);
-            } catch (const sim::opencl::DeviceError& e) {
-                const QString what = QString::fromUtf8(e.what());
-                notice = QStringLiteral("OpenCL backend unavailable (%1); using the reference backend").arg(what.section('\n', 0, 0));
-                if (what.contains('\n'))
-                    notice += '\n' + what.section('\n', 1);
-            }
-        }
-        return sim::makeReferenceSimulation(settings);
+    return [&options, &notice](const sim::SimulationSettings& settings) {
+        return makeBackend(settings, options.backend, options.device, notice);
     };
 }
 

@@ -1,0 +1,30 @@
+#include "app/Backend.h"
+
+#include "sim/opencl/OpenClSimulation.h"
+
+namespace vf::app {
+
+std::unique_ptr<sim::Simulation> makeBackend(const sim::SimulationSettings& settings, const QString& backend,
+                                             std::optional<int> device, QString& notice)
+{
+    if (backend != QLatin1String("reference")) {
+        try {
+            return std::make_unique<sim::opencl::OpenClSimulation>(settings, device);
+        } catch (const sim::opencl::DeviceError& e) {
+            const QString what = QString::fromUtf8(e.what());
+            notice = QStringLiteral("OpenCL backend unavailable (%1); using the reference backend").arg(what.section('\n', 0, 0));
+            if (what.contains('\n'))
+                notice += '\n' + what.section('\n', 1);
+        }
+    }
+    return sim::makeReferenceSimulation(settings);
+}
+
+QString backendLabel(const sim::Simulation& simulation)
+{
+    if (const auto* opencl = dynamic_cast<const sim::opencl::OpenClSimulation*>(&simulation))
+        return QStringLiteral("opencl (%1)").arg(QString::fromStdString(opencl->deviceName()));
+    return QString::fromStdString(simulation.backendName());
+}
+
+} // namespace vf::app

@@ -1,0 +1,57 @@
+// The desktop app's start: one window, opened on the file given (or a blank tray), offering to
+// recover what a crashed session left.
+#include "app/Commands.h"
+#include "app/MainWindow.h"
+#include "app/Recovery.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QTextStream>
+#include <QTimer>
+
+namespace vf::app {
+
+int guiMain(int argc, char** argv)
+{
+    QElapsedTimer sinceLaunch;
+    sinceLaunch.start();
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("vectorfluid"));
+    QApplication::setOrganizationName(QStringLiteral("vectorfluid"));
+    QApplication::setApplicationDisplayName(QStringLiteral("Vector Fluid"));
+    const QStringList arguments = QApplication::arguments().mid(1);
+    if (arguments.size() > 1) {
+        QTextStream(stderr) << "vectorfluid: expected at most one file to open (see vectorfluid --help)\n";
+        return BadInput;
+    }
+    if (!arguments.isEmpty() && !QFileInfo(arguments.front()).isFile()) {
+        QTextStream(stderr) << QStringLiteral("vectorfluid: no such file or command '%1' (see vectorfluid --help)\n").arg(arguments.front());
+        return BadInput;
+    }
+
+    MainWindow window;
+    window.show();
+    if (!arguments.isEmpty())
+        window.openFile(arguments.front());  // a broken file is reported; the window stays, blank
+    if (window.recovery().hasCrashedSession()
+        && QMessageBox::question(&window, QObject::tr("Recover"),
+                                 QObject::tr("Vector Fluid did not exit cleanly last time. Recover the unsaved work?"))
+            == QMessageBox::Yes)
+        window.openFile(window.recovery().filePath());
+
+    // The launch benchmark (docs/BENCHMARKS.md): time until the first frame of the simulation is
+    // on screen, then quit.
+    if (qEnvironmentVariableIsSet("VF_EXIT_WHEN_READY")) {
+        QObject::connect(&window.simulation(), &SimulationController::frameArrived, &app, [&] {
+            QTimer::singleShot(0, &app, [&] {
+                QTextStream(stdout) << "interactive after " << sinceLaunch.elapsed() << " ms\n";
+                app.quit();
+            });
+        });
+    }
+    window.simulation().setPlaying(true);
+    return app.exec();
+}
+
+} // namespace vf::app

@@ -1,0 +1,576 @@
+#include "app/MainWindow.h"
+
+#include "app/ClipboardExport.h"
+#include "app/ExportDialog.h"
+#include "app/Recovery.h"
+#include "app/SimulationPanel.h"
+#include "model/ProjectFile.h"
+#include "model/SceneFile.h"
+#include "model/SvgImport.h"
+#include "model/TextOutlines.h"
+
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QColorDialog>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace vf::app {
+
+namespace {
+
+constexpr int maxRecentFiles = 8;
+const QString recentKey = QStringLiteral("files/recent");
+
+sim::Vec2 toVec(QPointF p)
+{
+    return {p.x(), p.y()};
+}
+
+// A blank marbling tray: what File ▸ New opens.
+model::Scene blankScene()
+{
+    model::Scene scene;
+    scene.canvas.background = QColor(0xf4, 0xee, 0xe2);
+    scene.flow.viscosity = model::marblingViscosity;
+    scene.time.dt = 0.005;
+    return scene;
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent)
+    , m_document(m_simulation)
+    , m_regionModel(m_document)
+    , m_canvas(new Canvas(this))
+{
+    m_ask = [this](const QString& title, const QString& text, QMessageBox::StandardButtons buttons) {
+        return QMessageBox::question(this, title, text, buttons);
+    };
+    m_report = [this](const QString& title, const QString& text) { QMessageBox::warning(this, title, text); };
+
+    setCentralWidget(m_canvas);
+    createDocks();
+    createActions();
+    createStatusBar();
+    connectDocument();
+    m_recovery = new Recovery(m_document, {}, this);
+    resize(1280, 800);
+    newDocument();
+}
+
+MainWindow::~MainWindow() = default;
+
+// ---- Set-up ------------------------------------------------------------------------------------------
+
+void MainWindow::createActions()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, this, [this] {
+        if (maybeSave())
+            newDocument();
+    });
+    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    updateRecentMenu();
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addSeparator();
+    file->addAction(tr("&Import SVG…"), QKeySequence(Qt::CTRL | Qt::Key_I), this, &MainWindow::chooseImport);
+    file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportPicture);
+    file->addAction(tr("&Copy as SVG"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), this, &MainWindow::copySvg);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_document.undoStack().createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = m_document.undoStack().createRedoAction(this, tr("&Redo"));
+    redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QToolBar* tools = addToolBar(tr("Tools"));
+    tools->setObjectName(QStringLiteral("tools"));
+    auto* toolGroup = new QActionGroup(this);
+    const struct {
+        QString text;
+        QKeySequence key;
+        Canvas::Tool tool;
+        const char* name;
+    } toolList[] = {
+        {tr("&Drop"), QKeySequence(Qt::Key_D), Canvas::Tool::Drop, "toolDrop"},
+        {tr("&Stylus"), QKeySequence(Qt::Key_S), Canvas::Tool::Stylus, "toolStylus"},
+        {tr("&Text"), QKeySequence(Qt::Key_T), Canvas::Tool::Text, "toolText"},
+        {tr("&Pan"), QKeySequence(Qt::Key_H), Canvas::Tool::Pan, "toolPan"},
+    };
+    QMenu* toolMenu = menuBar()->addMenu(tr("&Tools"));
+    for (const auto& t : toolList) {
+        QAction* a = toolGroup->addAction(t.text);
+        a->setObjectName(QLatin1String(t.name));
+        a->setShortcut(t.key);
+        a->setCheckable(true);
+        a->setToolTip(QStringLiteral("%1 (%2)").arg(QString(t.text).remove('&'), t.key.toString()));
+        connect(a, &QAction::triggered, this, [this, tool = t.tool] { m_canvas->setTool(tool); });
+        tools->addAction(a);
+        toolMenu->addAction(a);
+    }
+    toolGroup->actions().front()->setChecked(true);
+    m_canvas->setTool(Canvas::Tool::Drop);
+
+    auto* colorButton = new QPushButton(tr("Ink"), this);
+    colorButton->setObjectName(QStringLiteral("inkColor"));
+    colorButton->setToolTip(tr("Colour of the next drop or text"));
+    connect(colorButton, &QPushButton::clicked, this, [this] {
+        const QColor c = QColorDialog::getColor(m_inkColor, this, tr("Ink colour"), QColorDialog::ShowAlphaChannel);
+        if (c.isValid())
+            setInkColor(c);
+    });
+    tools->addSeparator();
+    tools->addWidget(colorButton);
+    setInkColor(m_inkColor);
+
+    QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
+    QToolBar* playback = addToolBar(tr("Playback"));
+    playback->setObjectName(QStringLiteral("playback"));
+    m_playAction = simulation->addAction(tr("&Play"));
+    m_playAction->setObjectName(QStringLiteral("play"));
+    m_playAction->setCheckable(true);
+    m_playAction->setShortcut(QKeySequence(Qt::Key_Space));
+    connect(m_playAction, &QAction::toggled, &m_simulation, &SimulationController::setPlaying);
+    connect(&m_simulation, &SimulationController::playingChanged, m_playAction, [this](bool playing) {
+        const QSignalBlocker block(m_playAction);
+        m_playAction->setChecked(playing);
+    });
+    QAction* step = simulation->addAction(tr("Single &Step"), QKeySequence(Qt::Key_Period), &m_simulation, &SimulationController::stepOnce);
+    step->setObjectName(QStringLiteral("step"));
+    QAction* reset = simulation->addAction(tr("&Reset"), QKeySequence(Qt::CTRL | Qt::Key_R), this, [this] { m_document.reset(); });
+    reset->setObjectName(QStringLiteral("reset"));
+    playback->addActions({m_playAction, step, reset});
+    simulation->addSeparator();
+    auto* modes = new QActionGroup(this);
+    m_marblingAction = modes->addAction(tr("&Marbling"));
+    m_shapeDesignAction = modes->addAction(tr("Shape &Design"));
+    m_marblingAction->setObjectName(QStringLiteral("modeMarbling"));
+    m_shapeDesignAction->setObjectName(QStringLiteral("modeShapeDesign"));
+    for (auto [action, mode] : {std::pair{m_marblingAction, model::FluidMode::Marbling},
+                                std::pair{m_shapeDesignAction, model::FluidMode::ShapeDesign}}) {
+        action->setCheckable(true);
+        simulation->addAction(action);
+        playback->addAction(action);
+        connect(action, &QAction::triggered, this, [this, mode] {
+            model::EngineSettings s = m_document.settings();
+            s.flow.viscosity = model::viscosityOf(mode);
+            m_document.setSettings(s);
+        });
+    }
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(tr("Zoom &In"), QKeySequence::ZoomIn, m_canvas, &Canvas::zoomIn);
+    view->addAction(tr("Zoom &Out"), QKeySequence::ZoomOut, m_canvas, &Canvas::zoomOut);
+    view->addAction(tr("&Fit to Window"), QKeySequence(Qt::CTRL | Qt::Key_0), m_canvas, &Canvas::fitToWindow);
+    view->addAction(tr("&Actual Size"), QKeySequence(Qt::CTRL | Qt::Key_1), m_canvas, &Canvas::actualSize);
+    view->addSeparator();
+    const struct {
+        QString text;
+        void (Canvas::*set)(bool);
+    } overlays[] = {
+        {tr("Show &Vertices"), &Canvas::setShowVertices},
+        {tr("Show Ve&locity"), &Canvas::setShowVelocity},
+        {tr("Show &Grid"), &Canvas::setShowGrid},
+    };
+    for (const auto& o : overlays) {
+        QAction* a = view->addAction(o.text);
+        a->setCheckable(true);
+        connect(a, &QAction::toggled, m_canvas, o.set);
+    }
+    view->addSeparator();
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        view->addAction(dock->toggleViewAction());
+}
+
+void MainWindow::createDocks()
+{
+    // Regions: the topmost first; name editable in place, colour by double-click on the swatch
+    // (or the Colour button), visibility by the check box, order by drag or the buttons.
+    auto* regions = new QDockWidget(tr("Regions"), this);
+    regions->setObjectName(QStringLiteral("regionsDock"));
+    auto* regionsContent = new QWidget(regions);
+    auto* layout = new QVBoxLayout(regionsContent);
+    m_regionView = new QListView(regionsContent);
+    m_regionView->setObjectName(QStringLiteral("regionView"));
+    m_regionView->setModel(&m_regionModel);
+    m_regionView->setDragDropMode(QAbstractItemView::InternalMove);
+    m_regionView->setDefaultDropAction(Qt::MoveAction);
+    m_regionView->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked);
+    layout->addWidget(m_regionView);
+    auto* buttons = new QHBoxLayout;
+    const struct {
+        QString text;
+        const char* name;
+        std::function<void()> action;
+    } buttonList[] = {
+        {tr("Colour…"), "recolour", [this] { recolourSelected(); }},
+        {tr("Raise"), "raise", [this] { raiseSelected(1); }},
+        {tr("Lower"), "lower", [this] { raiseSelected(-1); }},
+    };
+    for (const auto& b : buttonList) {
+        auto* button = new QPushButton(b.text, regionsContent);
+        button->setObjectName(QLatin1String(b.name));
+        connect(button, &QPushButton::clicked, this, b.action);
+        buttons->addWidget(button);
+    }
+    layout->addLayout(buttons);
+    regions->setWidget(regionsContent);
+    addDockWidget(Qt::RightDockWidgetArea, regions);
+
+    auto* history = new QDockWidget(tr("History"), this);
+    history->setObjectName(QStringLiteral("historyDock"));
+    m_historyView = new QUndoView(&m_document.undoStack(), history);
+    m_historyView->setEmptyLabel(tr("<opened>"));
+    history->setWidget(m_historyView);
+    addDockWidget(Qt::RightDockWidgetArea, history);
+
+    auto* simulation = new QDockWidget(tr("Simulation"), this);
+    simulation->setObjectName(QStringLiteral("simulationDock"));
+    m_panel = new SimulationPanel(simulation);
+    simulation->setWidget(m_panel);
+    addDockWidget(Qt::RightDockWidgetArea, simulation);
+    connect(m_panel, &SimulationPanel::settingsEdited, &m_document, &model::Document::setSettings);
+}
+
+void MainWindow::createStatusBar()
+{
+    m_verticesLabel = new QLabel(this);
+    m_stepsLabel = new QLabel(this);
+    m_fpsLabel = new QLabel(this);
+    m_backendLabel = new QLabel(this);
+    for (QLabel* l : {m_verticesLabel, m_stepsLabel, m_fpsLabel, m_backendLabel})
+        statusBar()->addPermanentWidget(l);
+    connect(m_canvas, &Canvas::displayFpsChanged, this, [this](double fps) {
+        m_fpsLabel->setText(tr("%1 fps").arg(fps, 0, 'f', 0));
+    });
+}
+
+void MainWindow::connectDocument()
+{
+    connect(&m_simulation, &SimulationController::frameArrived, this, &MainWindow::showFrame);
+    connect(&m_simulation, &SimulationController::failed, this, [this](const QString& message) {
+        statusBar()->showMessage(message, 10000);
+    });
+    connect(&m_simulation, &SimulationController::notice, this, [this](const QString& message) {
+        statusBar()->showMessage(message, 10000);
+    });
+    connect(&m_document, &model::Document::regionsReset, this, [this] { m_canvas->setRegions(m_document.regions()); });
+    connect(&m_document, &model::Document::regionChanged, this, [this] { m_canvas->setRegions(m_document.regions()); });
+    connect(&m_document, &model::Document::settingsChanged, this, [this](const model::EngineSettings& s) {
+        m_panel->setSettings(s);
+        m_marblingAction->setChecked(s.flow.viscosity == model::marblingViscosity);
+        m_shapeDesignAction->setChecked(s.flow.viscosity == model::shapeDesignViscosity);
+    });
+    connect(&m_document, &model::Document::historyTrimmed, this, [this](int commands) {
+        statusBar()->showMessage(tr("History memory budget reached: the oldest %n step(s) can no longer be undone", nullptr, commands), 10000);
+    });
+    connect(&m_document.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(&m_document, &model::Document::filePathChanged, this, &MainWindow::updateTitle);
+
+    connect(m_canvas, &Canvas::dropRequested, this, [this](QPointF center, double radius) {
+        if (!m_document.canAddRegions()) {
+            statusBar()->showMessage(tr("The scene's own drops are still landing; play on and drop again"), 5000);
+            return;
+        }
+        m_document.drop(toVec(center), radius, m_inkColor);
+    });
+    connect(m_canvas, &Canvas::strokeStarted, this, [this] { m_document.beginStroke(); });
+    connect(m_canvas, &Canvas::strokeMoved, this, [this](QPointF from, QPointF to, double seconds) {
+        m_document.stroke(toVec(from), toVec(to), m_stylusRadius, seconds);
+    });
+    connect(m_canvas, &Canvas::textRequested, this, &MainWindow::askText);
+}
+
+// ---- Frames -------------------------------------------------------------------------------------------
+
+void MainWindow::showFrame()
+{
+    const auto frame = m_simulation.frame();
+    m_document.takeFrame(*frame);
+    m_canvas->setFrame(frame);
+    m_verticesLabel->setText(tr("%L1 vertices").arg(qulonglong(frame->vertexCount)));
+    m_stepsLabel->setText(frame->playing ? tr("%1 steps/s").arg(frame->stepsPerSecond, 0, 'f', 1) : tr("paused"));
+    m_backendLabel->setText(QString::fromStdString(frame->backend));
+}
+
+model::Drawing MainWindow::drawing() const
+{
+    model::Drawing d;
+    const model::Scene& scene = m_document.scene();
+    d.width = scene.canvas.width;
+    d.height = scene.canvas.height;
+    d.background = scene.canvas.background;
+    const auto frame = m_simulation.frame();
+    for (const model::RegionLook& look : m_document.regions()) {
+        model::DrawnRegion region{look.name, look.color, look.visible, {}};
+        if (frame && look.simIndex < int(frame->regions.size()))
+            region.contours = frame->regions[look.simIndex];
+        d.regions.push_back(std::move(region));
+    }
+    return d;
+}
+
+// ---- Files --------------------------------------------------------------------------------------------
+
+void MainWindow::newDocument()
+{
+    m_document.openScene(blankScene(), QStringLiteral("opencl"));
+    m_canvas->setBackground(m_document.scene().canvas.background);
+    m_canvas->fitToWindow();
+    updateTitle();
+}
+
+bool MainWindow::openFile(const QString& path)
+{
+    if (path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive)) {
+        const model::ProjectReadResult read = model::readProjectFile(path);
+        if (!read.ok()) {
+            m_report(tr("Cannot open project"), read.error);
+            return false;
+        }
+        m_document.openProject(read.project, m_document.settings().backend, m_document.settings().device);
+        m_document.setFilePath(path);
+    } else {
+        const model::SceneReadResult read = model::readSceneFile(path);
+        if (!read.ok()) {
+            m_report(tr("Cannot open scene"), read.error);
+            return false;
+        }
+        m_document.openScene(read.scene, m_document.settings().backend, m_document.settings().device);
+    }
+    m_canvas->setBackground(m_document.scene().canvas.background);
+    m_canvas->fitToWindow();
+    addRecent(path);
+    updateTitle();
+    return true;
+}
+
+bool MainWindow::saveTo(const QString& path)
+{
+    m_simulation.sync();
+    const QString error = model::writeProjectFile(m_document.project(), path);
+    if (!error.isEmpty()) {
+        m_report(tr("Cannot save"), error);
+        return false;
+    }
+    m_document.undoStack().setClean();
+    m_document.setFilePath(path);
+    m_recovery->discard();
+    addRecent(path);
+    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 3000);
+    return true;
+}
+
+bool MainWindow::save()
+{
+    return m_document.filePath().isEmpty() ? saveAs() : saveTo(m_document.filePath());
+}
+
+bool MainWindow::saveAs()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save project"), recentDirectory(), tr("Vector Fluid projects (*.vfproj)"));
+    if (path.isEmpty())
+        return false;
+    if (!path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive))
+        path += QLatin1String(".vfproj");
+    return saveTo(path);
+}
+
+void MainWindow::open()
+{
+    if (!maybeSave())
+        return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open"), recentDirectory(),
+                                                      tr("Projects and scenes (*.vfproj *.vfscene);;All files (*)"));
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_document.isModified())
+        return true;
+    switch (m_ask(tr("Unsaved changes"), tr("Save the changes to this document first?"),
+                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel)) {
+    case QMessageBox::Save:
+        return save();
+    case QMessageBox::Discard:
+        return true;
+    default:
+        return false;
+    }
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    m_recovery->discard();
+    event->accept();
+}
+
+void MainWindow::addRecent(const QString& path)
+{
+    QSettings settings;
+    QStringList recent = settings.value(recentKey).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    recent.removeAll(absolute);
+    recent.prepend(absolute);
+    settings.setValue(recentKey, recent.mid(0, maxRecentFiles));
+    updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value(recentKey).toStringList();
+    for (const QString& path : recent)
+        m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
+            if (maybeSave())
+                openFile(path);
+        })->setToolTip(path);
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+QString MainWindow::recentDirectory() const
+{
+    const QStringList recent = QSettings().value(recentKey).toStringList();
+    return recent.isEmpty() ? QString() : QFileInfo(recent.front()).absolutePath();
+}
+
+void MainWindow::updateTitle()
+{
+    const QString name = m_document.filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document.filePath()).fileName();
+    setWindowTitle(QStringLiteral("%1[*] — Vector Fluid").arg(name));
+    setWindowModified(m_document.isModified());
+}
+
+// ---- Import and export --------------------------------------------------------------------------------
+
+void MainWindow::chooseImport()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import SVG"), recentDirectory(), tr("SVG files (*.svg)"));
+    if (!path.isEmpty())
+        importSvg(path);
+}
+
+bool MainWindow::importSvg(const QString& path)
+{
+    if (!m_document.canAddRegions()) {
+        m_report(tr("Cannot import yet"), tr("The scene's own drops are still landing; play on and import again."));
+        return false;
+    }
+    const model::Scene& scene = m_document.scene();
+    const model::SvgImport imported = model::importSvgFile(path, scene.canvas.width, scene.canvas.height,
+                                                           m_document.settings().tracking.maxSpacing);
+    if (!imported.ok()) {
+        m_report(tr("Cannot import SVG"), imported.error);
+        return false;
+    }
+    std::vector<model::NewRegion> regions;
+    for (const model::ImportedShape& shape : imported.shapes)
+        regions.push_back({shape.name, shape.color, shape.contours});
+    m_document.addRegions(tr("Import %1").arg(QFileInfo(path).fileName()), regions);
+    if (!imported.warnings.isEmpty())
+        statusBar()->showMessage(imported.warnings.join(QStringLiteral("; ")), 10000);
+    return true;
+}
+
+void MainWindow::askText(QPointF at)
+{
+    bool ok = false;
+    const QString text = QInputDialog::getText(this, tr("Text"), tr("Text to set in ink:"), QLineEdit::Normal, {}, &ok);
+    if (ok)
+        insertText(text, at);
+}
+
+void MainWindow::insertText(const QString& text, QPointF baselineStart)
+{
+    if (text.trimmed().isEmpty())
+        return;
+    if (!m_document.canAddRegions()) {
+        statusBar()->showMessage(tr("The scene's own drops are still landing; play on and try again"), 5000);
+        return;
+    }
+    // A tenth of the canvas height per em: big enough to read, small enough to leave room to flow.
+    const double em = 0.1 * m_document.scene().canvas.height;
+    auto contours = model::textContours(text, m_textFont, toVec(baselineStart), em, m_document.settings().tracking.maxSpacing);
+    if (contours.empty())
+        return;
+    m_document.addRegions(tr("Text “%1”").arg(text), {{m_document.unusedName(text), m_inkColor, std::move(contours)}});
+}
+
+void MainWindow::exportPicture()
+{
+    m_simulation.sync();
+    ExportDialog dialog(drawing(), this);
+    dialog.exec();
+}
+
+void MainWindow::copySvg()
+{
+    m_simulation.sync();
+    copyAsSvg(drawing());
+    statusBar()->showMessage(tr("Copied the picture as SVG"), 3000);
+}
+
+// ---- Regions dock -------------------------------------------------------------------------------------
+
+void MainWindow::setInkColor(const QColor& color)
+{
+    m_inkColor = color;
+    if (auto* button = findChild<QPushButton*>(QStringLiteral("inkColor"))) {
+        QPixmap swatch(16, 16);
+        swatch.fill(color);
+        button->setIcon(QIcon(swatch));
+    }
+}
+
+void MainWindow::recolourSelected()
+{
+    const QModelIndex index = m_regionView->currentIndex();
+    if (!index.isValid())
+        return;
+    const QColor current = index.data(model::RegionListModel::ColorRole).value<QColor>();
+    const QColor chosen = QColorDialog::getColor(current, this, tr("Region colour"), QColorDialog::ShowAlphaChannel);
+    if (chosen.isValid())
+        m_regionModel.setData(index, chosen, model::RegionListModel::ColorRole);
+}
+
+void MainWindow::raiseSelected(int by)
+{
+    // Up the list is up the paint order.
+    const QModelIndex index = m_regionView->currentIndex();
+    if (!index.isValid())
+        return;
+    const int row = index.row();
+    const int target = row - by;
+    if (target < 0 || target >= m_regionModel.rowCount())
+        return;
+    const QString name = index.data().toString();
+    m_regionModel.moveRows({}, row, 1, {}, by > 0 ? target : target + 1);
+    const QModelIndexList moved = m_regionModel.match(m_regionModel.index(0), Qt::DisplayRole, name, 1, Qt::MatchExactly);
+    if (!moved.isEmpty())
+        m_regionView->setCurrentIndex(moved.front());
+}
+
+} // namespace vf::app

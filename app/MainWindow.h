@@ -1,0 +1,103 @@
+#pragma once
+// The desktop app's main window: the canvas, the tool bar, the Regions / History / Simulation
+// docks, the menus and the status bar, over one Document and its simulation worker.
+#include "app/Canvas.h"
+#include "app/SimulationController.h"
+#include "model/Document.h"
+#include "model/RegionListModel.h"
+
+#include <QLabel>
+#include <QListView>
+#include <QMainWindow>
+#include <QMessageBox>
+#include <QUndoView>
+
+#include <functional>
+
+namespace vf::app {
+
+class Recovery;
+class SimulationPanel;
+
+class MainWindow final : public QMainWindow {
+    Q_OBJECT
+
+public:
+    // How the window asks the user a question or reports an error: message boxes by default;
+    // tests put in answers so that nothing modal blocks them.
+    using Ask = std::function<QMessageBox::StandardButton(const QString& title, const QString& text,
+                                                          QMessageBox::StandardButtons buttons)>;
+    using Report = std::function<void(const QString& title, const QString& text)>;
+
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    void setAsk(Ask ask) { m_ask = std::move(ask); }
+    void setReport(Report report) { m_report = std::move(report); }
+
+    // Opens a scene (*.vfscene) or project (*.vfproj); on failure reports one line and keeps the
+    // open document as it was.
+    bool openFile(const QString& path);
+    bool saveTo(const QString& path);
+    void newDocument();
+    bool importSvg(const QString& path);
+    void insertText(const QString& text, QPointF baselineStart);
+
+    model::Document& document() { return m_document; }
+    SimulationController& simulation() { return m_simulation; }
+    Canvas& canvas() { return *m_canvas; }
+    model::RegionListModel& regionModel() { return m_regionModel; }
+    QListView& regionView() { return *m_regionView; }
+    Recovery& recovery() { return *m_recovery; }
+    model::Drawing drawing() const;  // the picture as it is now, for export
+    QColor inkColor() const { return m_inkColor; }
+    void setInkColor(const QColor& color);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void createActions();
+    void createDocks();
+    void createStatusBar();
+    void connectDocument();
+    bool maybeSave();
+    bool save();
+    bool saveAs();
+    void open();
+    void exportPicture();
+    void copySvg();
+    void chooseImport();
+    void askText(QPointF at);
+    void addRecent(const QString& path);
+    void updateRecentMenu();
+    void updateTitle();
+    void showFrame();
+    void raiseSelected(int by);
+    void recolourSelected();
+    QString recentDirectory() const;
+
+    SimulationController m_simulation;
+    model::Document m_document;
+    model::RegionListModel m_regionModel;
+    Canvas* m_canvas;
+    QListView* m_regionView = nullptr;
+    QUndoView* m_historyView = nullptr;
+    SimulationPanel* m_panel = nullptr;
+    Recovery* m_recovery = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QAction* m_playAction = nullptr;
+    QAction* m_marblingAction = nullptr;
+    QAction* m_shapeDesignAction = nullptr;
+    QLabel* m_verticesLabel = nullptr;
+    QLabel* m_stepsLabel = nullptr;
+    QLabel* m_fpsLabel = nullptr;
+    QLabel* m_backendLabel = nullptr;
+    QColor m_inkColor = QColor(0x1d, 0x35, 0x57);
+    double m_stylusRadius = 0.03;
+    QFont m_textFont = QFont(QStringLiteral("DejaVu Sans"));
+    Ask m_ask;
+    Report m_report;
+};
+
+} // namespace vf::app

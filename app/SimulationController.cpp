@@ -1,0 +1,109 @@
+#include "app/SimulationController.h"
+
+#include <QCoreApplication>
+
+#include <future>
+
+namespace vf::app {
+
+SimulationController::SimulationController(QObject* parent)
+    : QObject(parent)
+    , m_worker(new SimulationWorker)
+{
+    m_thread.setObjectName(QStringLiteral("simulation"));
+    m_worker->moveToThread(&m_thread);
+    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+    connect(m_worker, &SimulationWorker::frameReady, this, &SimulationController::receiveFrame, Qt::QueuedConnection);
+    connect(m_worker, &SimulationWorker::failed, this, &SimulationController::failed, Qt::QueuedConnection);
+    connect(m_worker, &SimulationWorker::notice, this, &SimulationController::notice, Qt::QueuedConnection);
+    connect(m_worker, &SimulationWorker::playingChanged, this, [this](bool playing) {
+        m_playing = playing;
+        emit playingChanged(playing);
+    }, Qt::QueuedConnection);
+    m_thread.start();
+}
+
+SimulationController::~SimulationController()
+{
+    m_thread.quit();
+    m_thread.wait();
+}
+
+void SimulationController::post(std::function<void(SimulationWorker&)> request)
+{
+    ++m_requests;
+    QMetaObject::invokeMethod(m_worker, [worker = m_worker, request = std::move(request)] {
+        request(*worker);
+        worker->requestDone();
+    }, Qt::QueuedConnection);
+}
+
+void SimulationController::load(const model::Scene& scene, const model::EngineSettings& settings, const model::StateSlotPtr& start)
+{
+    post([scene, settings, start](SimulationWorker& w) { w.load(scene, settings, start); });
+}
+
+void SimulationController::configure(const model::EngineSettings& settings)
+{
+    post([settings](SimulationWorker& w) { w.configure(settings); });
+}
+
+void SimulationController::snapshot(const model::StateSlotPtr& into)
+{
+    post([into](SimulationWorker& w) { w.snapshot(into); });
+}
+
+void SimulationController::restore(const model::StateSlotPtr& from)
+{
+    post([from](SimulationWorker& w) { w.restore(from); });
+}
+
+void SimulationController::addRegion(const std::vector<sim::Polygon>& contours)
+{
+    post([contours](SimulationWorker& w) { w.addRegion(contours); });
+}
+
+void SimulationController::drop(sim::Vec2 center, double radius)
+{
+    post([center, radius](SimulationWorker& w) { w.drop(center, radius); });
+}
+
+void SimulationController::stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
+{
+    post([=](SimulationWorker& w) { w.stylus(from, to, radius, seconds); });
+}
+
+void SimulationController::setPlaying(bool playing)
+{
+    m_playing = playing;
+    post([playing](SimulationWorker& w) { w.setPlaying(playing); });
+}
+
+void SimulationController::stepOnce()
+{
+    post([](SimulationWorker& w) { w.stepOnce(); });
+}
+
+void SimulationController::receiveFrame()
+{
+    if (auto frame = m_worker->takeFrame()) {
+        m_frame = std::move(frame);
+        emit frameArrived();
+    }
+}
+
+void SimulationController::sync()
+{
+    // A request of its own: once it has run, every earlier one has too.
+    std::promise<void> done;
+    post([&done](SimulationWorker&) { done.set_value(); });
+    done.get_future().wait();
+    // Its frame follows through the event queue; take it directly rather than spin the loop.
+    receiveFrame();
+    while (!m_frame || m_frame->serial < m_requests) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+        receiveFrame();
+    }
+}
+
+} // namespace vf::app

@@ -1,0 +1,243 @@
+#include "app/SimulationWorker.h"
+
+#include "app/Backend.h"
+#include "model/SceneRunner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vf::app {
+
+namespace {
+
+QString firstLine(const char* what)
+{
+    return QString::fromUtf8(what).section('\n', 0, 0);
+}
+
+} // namespace
+
+SimulationWorker::SimulationWorker(QObject* parent)
+    : QObject(parent)
+{
+    m_stepTimer.setSingleShot(true);
+    connect(&m_stepTimer, &QTimer::timeout, this, &SimulationWorker::step);
+    m_clock.start();
+}
+
+SimulationWorker::~SimulationWorker() = default;
+
+void SimulationWorker::build(const model::EngineSettings& settings)
+{
+    model::Scene scene = m_scene;
+    scene.flow = settings.flow;
+    scene.tracking = settings.tracking;
+    QString fallback;
+    m_simulation = makeBackend(model::simulationSettings(scene), settings.backend,
+                               settings.device >= 0 ? std::optional<int>(settings.device) : std::nullopt, fallback);
+    m_settings = settings;
+    m_backendLabel = backendLabel(*m_simulation);
+    if (!fallback.isEmpty())
+        emit notice(fallback.section('\n', 0, 0));
+}
+
+void SimulationWorker::load(const model::Scene& scene, const model::EngineSettings& settings, const model::StateSlotPtr& start)
+{
+    m_scene = scene;
+    m_script.emplace(scene);
+    m_steps = 0;
+    try {
+        build(settings);
+        if (start) {
+            m_simulation->restore(*start->wait());
+        } else {
+            for (const model::RegionSpec& r : scene.regions)
+                m_simulation->addRegion(model::shapeContours(r.shape, settings.tracking.maxSpacing));
+            m_script->applyDrops(*m_simulation, -INFINITY, 0.0);  // drops at t = 0 are the starting picture
+        }
+    } catch (const std::exception& e) {
+        m_simulation.reset();
+        stopWith(firstLine(e.what()));
+    }
+}
+
+void SimulationWorker::configure(const model::EngineSettings& settings)
+{
+    if (!m_simulation)
+        return;
+    // The new simulation takes the old one's state; if it cannot (say a lower vertex limit than
+    // the contours have now), the old one carries on.
+    const sim::SimulationState state = m_simulation->snapshot();
+    std::unique_ptr<sim::Simulation> previous = std::move(m_simulation);
+    const model::EngineSettings previousSettings = m_settings;
+    const QString previousLabel = m_backendLabel;
+    try {
+        build(settings);
+        m_simulation->restore(state);
+    } catch (const std::exception& e) {
+        m_simulation = std::move(previous);
+        m_settings = previousSettings;
+        m_backendLabel = previousLabel;
+        stopWith(firstLine(e.what()));
+    }
+}
+
+void SimulationWorker::snapshot(const model::StateSlotPtr& into)
+{
+    into->fill(std::make_shared<const sim::SimulationState>(m_simulation ? m_simulation->snapshot() : sim::SimulationState{}));
+}
+
+void SimulationWorker::restore(const model::StateSlotPtr& from)
+{
+    if (!m_simulation)
+        return;
+    try {
+        m_simulation->restore(*from->wait());
+    } catch (const std::exception& e) {
+        stopWith(firstLine(e.what()));
+    }
+}
+
+void SimulationWorker::addRegion(const std::vector<sim::Polygon>& contours)
+{
+    if (m_simulation)
+        m_simulation->addRegion(contours);
+}
+
+void SimulationWorker::drop(sim::Vec2 center, double radius)
+{
+    if (m_simulation && m_simulation->drop(center, radius).vertexLimitReached)
+        stopWith(tr("vertex limit reached (%1 vertices)").arg(m_simulation->vertexCount()));
+}
+
+void SimulationWorker::stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
+{
+    if (m_simulation)
+        m_simulation->stylus(from, to, radius, seconds);
+}
+
+void SimulationWorker::setPlaying(bool playing)
+{
+    if (playing == m_playing || (playing && !m_simulation))
+        return;
+    m_playing = playing;
+    m_nextStepAt = m_clock.elapsed();
+    m_stepsInWindow = 0;
+    m_windowStart = m_clock.elapsed();
+    m_stepsPerSecond = 0.0;
+    emit playingChanged(m_playing);
+    scheduleStep();
+}
+
+void SimulationWorker::stepOnce()
+{
+    if (!m_playing)
+        step();
+}
+
+void SimulationWorker::scheduleStep()
+{
+    if (m_playing && !m_stepTimer.isActive())
+        m_stepTimer.start(int(std::max<qint64>(0, m_nextStepAt - m_clock.elapsed())));
+}
+
+void SimulationWorker::step()
+{
+    if (!m_simulation)
+        return;
+    const double dt = m_scene.time.dt;
+    const double t = m_simulation->time();
+    try {
+        bool limit = m_script->applyDrops(*m_simulation, t, t + dt);
+        m_script->applyStylus(*m_simulation, t, t + dt);
+        limit = m_simulation->step(dt).vertexLimitReached || limit;
+        ++m_steps;
+        if (limit)
+            stopWith(tr("vertex limit reached (%1 vertices); paused").arg(m_simulation->vertexCount()));
+    } catch (const std::exception& e) {
+        stopWith(firstLine(e.what()));
+    }
+    // Real time: one dt of simulated time per dt of wall time, or slower when steps take longer.
+    const qint64 now = m_clock.elapsed();
+    m_nextStepAt = std::max(now, m_nextStepAt + qint64(std::lround(dt * 1000.0)));
+    ++m_stepsInWindow;
+    if (now - m_windowStart >= 1000) {
+        m_stepsPerSecond = 1000.0 * m_stepsInWindow / double(now - m_windowStart);
+        m_stepsInWindow = 0;
+        m_windowStart = now;
+    }
+    {
+        std::lock_guard lock(m_frameMutex);
+        m_dirty = true;
+    }
+    offerFrame();
+    scheduleStep();
+}
+
+void SimulationWorker::stopWith(const QString& message)
+{
+    if (m_playing) {
+        m_playing = false;
+        m_stepTimer.stop();
+        emit playingChanged(false);
+    }
+    emit failed(message);
+}
+
+void SimulationWorker::requestDone()
+{
+    ++m_handled;
+    {
+        std::lock_guard lock(m_frameMutex);
+        m_dirty = true;
+    }
+    offerFrame();
+}
+
+void SimulationWorker::offerFrame()
+{
+    {
+        std::lock_guard lock(m_frameMutex);
+        if (m_frameOut || !m_dirty)
+            return;
+    }
+    auto frame = std::make_shared<model::Frame>();
+    frame->serial = m_handled;
+    frame->steps = m_steps;
+    frame->width = m_scene.canvas.width;
+    frame->height = m_scene.canvas.height;
+    frame->stepsPerSecond = m_playing ? m_stepsPerSecond : 0.0;
+    frame->backend = m_backendLabel.toStdString();
+    frame->playing = m_playing;
+    if (m_simulation) {
+        frame->time = m_simulation->time();
+        frame->vertexCount = m_simulation->vertexCount();
+        frame->regions = m_simulation->regions();
+    }
+    {
+        std::lock_guard lock(m_frameMutex);
+        m_frame = std::move(frame);
+        m_frameOut = true;
+        m_dirty = false;
+    }
+    emit frameReady();
+}
+
+std::shared_ptr<const model::Frame> SimulationWorker::takeFrame()
+{
+    std::shared_ptr<const model::Frame> frame;
+    bool again = false;
+    {
+        std::lock_guard lock(m_frameMutex);
+        frame = std::move(m_frame);
+        m_frame.reset();
+        m_frameOut = false;
+        again = m_dirty;
+    }
+    if (again)  // changed while the GUI held on to the last one: make the next now
+        QMetaObject::invokeMethod(this, &SimulationWorker::offerFrame, Qt::QueuedConnection);
+    return frame;
+}
+
+} // namespace vf::app

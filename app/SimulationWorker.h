@@ -1,0 +1,80 @@
+#pragma once
+// The live simulation, on its own thread (DESIGN §2): it owns the Simulation (and so its OpenCL
+// context, created on this thread), steps it while playing, runs the requests the GUI queues
+// between steps, and hands out immutable frames. Like Qt's mandelbrot example it coalesces: a
+// new frame is made only once the GUI has taken the previous one.
+#include "model/EngineSettings.h"
+#include "model/Frame.h"
+#include "model/SceneScript.h"
+#include "model/StateSlot.h"
+#include "sim/Simulation.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <memory>
+#include <mutex>
+#include <optional>
+
+namespace vf::app {
+
+class SimulationWorker final : public QObject {
+    Q_OBJECT
+
+public:
+    explicit SimulationWorker(QObject* parent = nullptr);
+    ~SimulationWorker() override;
+
+    // ---- Requests: called on the worker's thread, in the order the GUI made them. ------------
+    void load(const model::Scene& scene, const model::EngineSettings& settings, const model::StateSlotPtr& start);
+    void configure(const model::EngineSettings& settings);
+    void snapshot(const model::StateSlotPtr& into);
+    void restore(const model::StateSlotPtr& from);
+    void addRegion(const std::vector<sim::Polygon>& contours);
+    void drop(sim::Vec2 center, double radius);
+    void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
+    void setPlaying(bool playing);
+    void stepOnce();
+    // After each request: counts it (Frame::serial) and offers a frame showing its effect.
+    void requestDone();
+
+    // ---- Any thread. --------------------------------------------------------------------------
+    // The newest frame, once (null when there is none new). Taking it lets the next one be made.
+    std::shared_ptr<const model::Frame> takeFrame();
+
+signals:
+    void frameReady();                           // takeFrame() has a new frame
+    void failed(const QString& message);         // one line; playing stopped
+    void notice(const QString& message);         // one line, e.g. a backend fallback
+    void playingChanged(bool playing);
+
+private:
+    void build(const model::EngineSettings& settings);
+    void step();
+    void scheduleStep();
+    void offerFrame();
+    void stopWith(const QString& message);
+
+    std::unique_ptr<sim::Simulation> m_simulation;
+    model::Scene m_scene;
+    std::optional<model::SceneScript> m_script;
+    model::EngineSettings m_settings;
+    QString m_backendLabel;
+    QTimer m_stepTimer;
+    QElapsedTimer m_clock;         // paces playing to real time: one dt of simulated time per dt
+    qint64 m_nextStepAt = 0;       // ms on m_clock
+    bool m_playing = false;
+    std::uint64_t m_handled = 0;   // requests done
+    std::int64_t m_steps = 0;
+    double m_stepsPerSecond = 0.0;
+    int m_stepsInWindow = 0;
+    qint64 m_windowStart = 0;
+
+    std::mutex m_frameMutex;       // guards the three below
+    std::shared_ptr<const model::Frame> m_frame;  // made, not yet taken
+    bool m_frameOut = false;       // a frame was signalled and not taken yet
+    bool m_dirty = false;          // the state changed since the last frame
+};
+
+} // namespace vf::app

@@ -1,0 +1,427 @@
+#include "model/Document.h"
+
+#include <QSet>
+
+#include <map>
+#include <unordered_set>
+
+namespace vf::model {
+
+namespace {
+
+// `base`, or `base` with a number appended, that no region of `table` has.
+QString unusedNameIn(const RegionTable& table, const QString& base)
+{
+    QSet<QString> taken;
+    for (const RegionLook& r : table)
+        taken.insert(r.name);
+    if (!taken.contains(base))
+        return base;
+    for (int n = 2;; ++n)
+        if (const QString name = QStringLiteral("%1 %2").arg(base).arg(n); !taken.contains(name))
+            return name;
+}
+
+const CommandRecord& recordAt(const QUndoStack& stack, int i)
+{
+    return *static_cast<const DocumentCommand*>(stack.command(i))->record();
+}
+
+} // namespace
+
+EngineSettings engineSettingsOf(const Scene& scene, const QString& backend, int device)
+{
+    return {scene.flow, scene.tracking, backend, device};
+}
+
+Document::Document(SimulationPort& port, QObject* parent)
+    : QObject(parent)
+    , m_port(port)
+{
+}
+
+Document::~Document()
+{
+    // The commands call back into this document while the stack deletes them.
+    m_rebuilding = true;
+    m_undo.clear();
+}
+
+void Document::setFilePath(const QString& path)
+{
+    if (path == m_filePath)
+        return;
+    m_filePath = path;
+    emit filePathChanged(path);
+}
+
+// ---- Opening and saving --------------------------------------------------------------------------
+
+void Document::open(const Scene& scene, const EngineSettings& settings, const RegionTable& regions, const StateSlotPtr& start)
+{
+    m_rebuilding = true;
+    m_undo.clear();
+    m_rebuilding = false;
+    m_scene = scene;
+    m_script.emplace(m_scene);
+    m_port.load(m_scene, settings, start);
+    m_restoreSerial = m_port.requestCount();
+    applySettings(settings);
+    emit regionsAboutToBeReset();
+    m_regions = regions;
+    emit regionsReset();
+}
+
+void Document::openScene(const Scene& scene, const QString& backend, int device)
+{
+    const SceneScript script(scene);
+    const RegionTable starting(script.looks().begin(), script.looks().begin() + script.startingRegionCount());
+    open(scene, engineSettingsOf(scene, backend, device), starting, nullptr);
+    setFilePath({});
+}
+
+void Document::openProject(const Project& project, const QString& backend, int device)
+{
+    open(project.scene, engineSettingsOf(project.scene, backend, device), project.regions,
+         std::make_shared<StateSlot>(std::make_shared<const sim::SimulationState>(project.state)));
+
+    // One slot per distinct state, so states the file shares stay shared.
+    std::map<const sim::SimulationState*, StateSlotPtr> slotOfState;
+    auto slotFor = [&slotOfState](const StatePtr& state) -> StateSlotPtr {
+        if (!state)
+            return nullptr;
+        StateSlotPtr& slot = slotOfState[state.get()];
+        if (!slot)
+            slot = std::make_shared<StateSlot>(state);
+        return slot;
+    };
+    std::vector<std::shared_ptr<CommandRecord>> records;
+    for (const HistoryEntry& e : project.history) {
+        auto r = std::make_shared<CommandRecord>();
+        r->text = e.text;
+        r->regionsBefore = e.regionsBefore;
+        r->regionsAfter = e.regionsAfter;
+        r->settingsBefore = {e.flowBefore, e.trackingBefore, backend, device};
+        r->settingsAfter = {e.flowAfter, e.trackingAfter, backend, device};
+        r->before = slotFor(e.before);
+        r->after = slotFor(e.after);
+        records.push_back(std::move(r));
+    }
+    rebuildHistory(std::move(records), project.historyIndex, project.historyIndex);
+}
+
+Project Document::project(const StateSlotPtr& now)
+{
+    StateSlotPtr current = now;
+    if (!current) {
+        current = std::make_shared<StateSlot>();
+        m_port.snapshot(current);
+    }
+    Project p;
+    p.scene = m_scene;
+    p.scene.flow = m_settings.flow;
+    p.scene.tracking = m_settings.tracking;
+    p.regions = m_regions;
+    p.state = *current->wait();
+    p.historyIndex = m_undo.index();
+    for (int i = 0; i < m_undo.count(); ++i) {
+        const CommandRecord& r = recordAt(m_undo, i);
+        HistoryEntry e;
+        e.text = r.text;
+        e.regionsBefore = r.regionsBefore;
+        e.regionsAfter = r.regionsAfter;
+        e.flowBefore = r.settingsBefore.flow;
+        e.trackingBefore = r.settingsBefore.tracking;
+        e.flowAfter = r.settingsAfter.flow;
+        e.trackingAfter = r.settingsAfter.tracking;
+        // An open command (the newest, still running) ends now.
+        e.before = r.before ? r.before->wait() : nullptr;
+        e.after = r.after ? r.after->wait() : (r.before ? current->state() : nullptr);
+        p.history.push_back(std::move(e));
+    }
+    return p;
+}
+
+// ---- Regions ----------------------------------------------------------------------------------------
+
+bool Document::canAddRegions() const
+{
+    return m_script && m_regions.size() >= m_script->looks().size();
+}
+
+QString Document::unusedName(const QString& base) const
+{
+    return unusedNameIn(m_regions, base);
+}
+
+void Document::replaceRegions(const RegionTable& regions)
+{
+    const bool sameRows = regions.size() == m_regions.size()
+        && std::equal(regions.begin(), regions.end(), m_regions.begin(),
+                      [](const RegionLook& a, const RegionLook& b) { return a.simIndex == b.simIndex; });
+    if (!sameRows) {
+        emit regionsAboutToBeReset();
+        m_regions = regions;
+        emit regionsReset();
+        return;
+    }
+    for (std::size_t i = 0; i < regions.size(); ++i) {
+        if (m_regions[i] == regions[i])
+            continue;
+        m_regions[i] = regions[i];
+        emit regionChanged(int(i));
+    }
+}
+
+void Document::takeFrame(const Frame& frame)
+{
+    // Only regions the scene's script has landed can appear unannounced; a frame from before the
+    // last restore still shows the regions of the state that was replaced.
+    if (frame.serial < m_restoreSerial || !m_script || frame.regions.size() <= m_regions.size())
+        return;
+    RegionTable grown = m_regions;
+    while (grown.size() < frame.regions.size() && grown.size() < m_script->looks().size()) {
+        RegionLook look = m_script->looks()[grown.size()];
+        look.simIndex = int(grown.size());
+        look.name = unusedNameIn(grown, look.name);  // a user rename may have taken it
+        grown.push_back(look);
+    }
+    replaceRegions(grown);
+}
+
+// ---- Commands ------------------------------------------------------------------------------------
+
+CommandRecord* Document::openCommand()
+{
+    if (m_undo.index() == 0)
+        return nullptr;
+    CommandRecord* top = static_cast<const DocumentCommand*>(m_undo.command(m_undo.index() - 1))->record().get();
+    return top->isOpen() ? top : nullptr;
+}
+
+void Document::closeCommand(CommandRecord& record)
+{
+    record.after = std::make_shared<StateSlot>();
+    m_port.snapshot(record.after);
+    record.regionsAfter = m_regions;
+    record.settingsAfter = m_settings;
+}
+
+StateSlotPtr Document::stateNow()
+{
+    if (CommandRecord* open = openCommand()) {
+        closeCommand(*open);
+        return open->after;
+    }
+    auto slot = std::make_shared<StateSlot>();
+    m_port.snapshot(slot);
+    return slot;
+}
+
+void Document::pushSimulationCommand(const QString& text, const std::function<void()>& action)
+{
+    auto record = std::make_shared<CommandRecord>();
+    record->text = text;
+    record->before = stateNow();
+    record->regionsBefore = m_regions;
+    record->settingsBefore = m_settings;
+    action();
+    m_undo.push(new DocumentCommand(*this, std::move(record), true));
+    enforceHistoryBudget();
+}
+
+void Document::pushRegionsCommand(const QString& text, RegionTable after)
+{
+    if (CommandRecord* open = openCommand())
+        closeCommand(*open);
+    auto record = std::make_shared<CommandRecord>();
+    record->text = text;
+    record->regionsBefore = m_regions;
+    record->regionsAfter = std::move(after);
+    record->settingsBefore = record->settingsAfter = m_settings;
+    m_undo.push(new DocumentCommand(*this, std::move(record), false));
+    enforceHistoryBudget();
+}
+
+void Document::applySide(const CommandRecord& record, bool after)
+{
+    if (m_rebuilding)
+        return;
+    if (record.touchesSimulation()) {
+        const EngineSettings& settings = after ? record.settingsAfter : record.settingsBefore;
+        if (settings != m_settings)
+            m_port.configure(settings);
+        m_port.restore(after ? record.after : record.before);
+        m_restoreSerial = m_port.requestCount();
+        applySettings(settings);
+    }
+    replaceRegions(after ? record.regionsAfter : record.regionsBefore);
+}
+
+void Document::applySettings(const EngineSettings& settings)
+{
+    if (settings == m_settings)
+        return;
+    m_settings = settings;
+    emit settingsChanged(m_settings);
+}
+
+void Document::drop(sim::Vec2 center, double radius, const QColor& color)
+{
+    if (!canAddRegions())
+        return;
+    pushSimulationCommand(tr("Drop"), [&] {
+        m_port.drop(center, radius);
+        RegionTable regions = m_regions;
+        regions.push_back({unusedName(tr("drop")), color, true, int(m_regions.size())});
+        replaceRegions(regions);
+    });
+}
+
+void Document::beginStroke()
+{
+    pushSimulationCommand(tr("Stylus stroke"), [] {});
+}
+
+void Document::stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
+{
+    m_port.stylus(from, to, radius, seconds);
+}
+
+void Document::addRegions(const QString& commandText, const std::vector<NewRegion>& regions)
+{
+    if (!canAddRegions() || regions.empty())
+        return;
+    pushSimulationCommand(commandText, [&] {
+        RegionTable table = m_regions;
+        for (const NewRegion& r : regions) {
+            m_port.addRegion(r.contours);
+            table.push_back({unusedNameIn(table, r.name), r.color, true, int(table.size())});
+        }
+        replaceRegions(table);
+    });
+}
+
+void Document::setSettings(const EngineSettings& settings)
+{
+    if (settings == m_settings)
+        return;
+    pushSimulationCommand(tr("Simulation settings"), [&] {
+        m_port.configure(settings);
+        applySettings(settings);
+    });
+}
+
+void Document::reset()
+{
+    pushSimulationCommand(tr("Reset"), [&] {
+        m_port.load(m_scene, m_settings, nullptr);
+        m_restoreSerial = m_port.requestCount();
+        const RegionTable starting(m_script->looks().begin(), m_script->looks().begin() + m_script->startingRegionCount());
+        replaceRegions(starting);
+    });
+}
+
+bool Document::setRegionColor(int index, const QColor& color)
+{
+    if (index < 0 || index >= int(m_regions.size()) || !color.isValid() || m_regions[index].color == color)
+        return false;
+    RegionTable after = m_regions;
+    after[index].color = color;
+    pushRegionsCommand(tr("Recolour %1").arg(m_regions[index].name), std::move(after));
+    return true;
+}
+
+bool Document::setRegionName(int index, const QString& name)
+{
+    const QString trimmed = name.trimmed();
+    if (index < 0 || index >= int(m_regions.size()) || trimmed.isEmpty() || unusedName(trimmed) != trimmed)
+        return false;
+    RegionTable after = m_regions;
+    after[index].name = trimmed;
+    pushRegionsCommand(tr("Rename %1 to %2").arg(m_regions[index].name, trimmed), std::move(after));
+    return true;
+}
+
+bool Document::setRegionVisible(int index, bool visible)
+{
+    if (index < 0 || index >= int(m_regions.size()) || m_regions[index].visible == visible)
+        return false;
+    RegionTable after = m_regions;
+    after[index].visible = visible;
+    pushRegionsCommand((visible ? tr("Show %1") : tr("Hide %1")).arg(m_regions[index].name), std::move(after));
+    return true;
+}
+
+bool Document::moveRegion(int from, int to)
+{
+    const int n = int(m_regions.size());
+    if (from < 0 || from >= n || to < 0 || to >= n || from == to)
+        return false;
+    RegionTable after = m_regions;
+    const RegionLook moved = after[from];
+    after.erase(after.begin() + from);
+    after.insert(after.begin() + to, moved);
+    pushRegionsCommand(tr("Reorder %1").arg(moved.name), std::move(after));
+    return true;
+}
+
+// ---- History memory ------------------------------------------------------------------------------
+
+std::size_t Document::historyBytes(int first) const
+{
+    std::unordered_set<const sim::SimulationState*> counted;
+    std::size_t bytes = 0;
+    for (int i = first; i < m_undo.count(); ++i) {
+        const CommandRecord& r = recordAt(m_undo, i);
+        for (const StateSlotPtr& slot : {r.before, r.after})
+            if (StatePtr state = slot ? slot->state() : nullptr; state && counted.insert(state.get()).second)
+                bytes += state->bytes();
+    }
+    return bytes;
+}
+
+void Document::setHistoryBudget(std::size_t bytes)
+{
+    m_historyBudget = bytes;
+    enforceHistoryBudget();
+}
+
+void Document::enforceHistoryBudget()
+{
+    // States count once taken; the newest are usually still being taken on the worker, so the
+    // check runs a command behind, which a budget of hundreds of megabytes absorbs.
+    // Commands not yet done (redoable) stay: the current state lies before them.
+    int drop = 0;
+    while (drop < m_undo.index() && drop + 1 < m_undo.count() && historyBytes(drop) > m_historyBudget)
+        ++drop;
+    if (drop == 0)
+        return;
+    std::vector<std::shared_ptr<CommandRecord>> records;
+    for (int i = drop; i < m_undo.count(); ++i)
+        records.push_back(static_cast<const DocumentCommand*>(m_undo.command(i))->record());
+    const int clean = m_undo.cleanIndex();
+    rebuildHistory(std::move(records), m_undo.index() - drop,
+                   clean >= drop ? std::optional<int>(clean - drop) : std::nullopt);
+    emit historyTrimmed(drop);
+}
+
+void Document::rebuildHistory(std::vector<std::shared_ptr<CommandRecord>> records, int index, std::optional<int> cleanIndex)
+{
+    // QUndoStack cannot drop its oldest commands, so the kept ones are pushed into the emptied
+    // stack again, with nothing applied while it moves to their index.
+    m_rebuilding = true;
+    m_undo.clear();
+    for (auto& r : records)
+        m_undo.push(new DocumentCommand(*this, std::move(r), false));
+    if (cleanIndex) {
+        m_undo.setIndex(*cleanIndex);
+        m_undo.setClean();
+    } else {
+        m_undo.resetClean();
+    }
+    m_undo.setIndex(index);
+    m_rebuilding = false;
+}
+
+} // namespace vf::model

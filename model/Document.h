@@ -1,0 +1,124 @@
+#pragma once
+// The open piece of work: the scene it started from, the region looks, the engine settings and
+// the undo history, over a live simulation it reaches only through a SimulationPort. Lives on the
+// GUI thread; every user action is one command on its QUndoStack (DESIGN §2, undo semantics).
+#include "model/DocumentCommand.h"
+#include "model/Frame.h"
+#include "model/Project.h"
+#include "model/SceneScript.h"
+#include "model/SimulationPort.h"
+
+#include <QObject>
+#include <QUndoStack>
+
+#include <functional>
+#include <optional>
+
+namespace vf::model {
+
+struct NewRegion {
+    QString name;
+    QColor color;
+    std::vector<sim::Polygon> contours;
+};
+
+class Document final : public QObject {
+    Q_OBJECT
+
+public:
+    // Default budget for the simulation states the history keeps (see setHistoryBudget).
+    static constexpr std::size_t defaultHistoryBudget = std::size_t(512) << 20;
+
+    explicit Document(SimulationPort& port, QObject* parent = nullptr);
+    ~Document() override;
+
+    // Opening replaces the whole document and its history.
+    void openScene(const Scene& scene, const QString& backend, int device = -1);
+    void openProject(const Project& project, const QString& backend, int device = -1);
+    // Everything for a project file. Waits for the states the worker has still to take; `now`
+    // (when given) is the current state already taken, else it is taken here.
+    Project project(const StateSlotPtr& now = nullptr);
+
+    const Scene& scene() const { return m_scene; }
+    const RegionTable& regions() const { return m_regions; }
+    const EngineSettings& settings() const { return m_settings; }
+    QUndoStack& undoStack() { return m_undo; }
+    SimulationPort& port() { return m_port; }
+
+    QString filePath() const { return m_filePath; }
+    void setFilePath(const QString& path);
+    bool isModified() const { return !m_undo.isClean(); }
+
+    // False while drops of the scene's own script are still to land: a region added then would
+    // take a simulation index that one of them is due to have.
+    bool canAddRegions() const;
+    // `base`, or `base` with a number appended, that no region has yet.
+    QString unusedName(const QString& base) const;
+
+    // ---- Actions: each is one undoable command. ---------------------------------------------
+    void drop(sim::Vec2 center, double radius, const QColor& color);
+    void beginStroke();
+    void stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
+    void addRegions(const QString& commandText, const std::vector<NewRegion>& regions);
+    void setSettings(const EngineSettings& settings);
+    void reset();  // back to the scene's starting picture
+
+    // Index into regions() (paint order). Each returns false, changing nothing, when the edit is
+    // invalid (out of range, an empty or taken name) or changes nothing.
+    bool setRegionColor(int index, const QColor& color);
+    bool setRegionName(int index, const QString& name);
+    bool setRegionVisible(int index, bool visible);
+    bool moveRegion(int from, int to);
+
+    // ---- From the worker. --------------------------------------------------------------------
+    // Regions the scene's script has landed since get their looks here.
+    void takeFrame(const Frame& frame);
+
+    // ---- History memory. ----------------------------------------------------------------------
+    // The history keeps the simulation states of its commands (about 48 bytes per vertex each).
+    // Past the budget, the oldest commands are dropped from the history (never corrupted): they
+    // can no longer be undone. At least the newest command is always kept.
+    void setHistoryBudget(std::size_t bytes);
+    std::size_t historyBudget() const { return m_historyBudget; }
+    // Bytes of the distinct states taken so far by commands [first, count).
+    std::size_t historyBytes(int first = 0) const;
+
+    // Used by DocumentCommand.
+    void applySide(const CommandRecord& record, bool after);
+    void closeCommand(CommandRecord& record);
+
+signals:
+    void regionsAboutToBeReset();
+    void regionsReset();
+    void regionChanged(int index);
+    void settingsChanged(const vf::model::EngineSettings& settings);
+    void historyTrimmed(int commands);
+    void filePathChanged(const QString& path);
+
+private:
+    void open(const Scene& scene, const EngineSettings& settings, const RegionTable& regions, const StateSlotPtr& start);
+    // The state now, closing the open command if there is one (its end is this state).
+    StateSlotPtr stateNow();
+    void pushSimulationCommand(const QString& text, const std::function<void()>& action);
+    void pushRegionsCommand(const QString& text, RegionTable after);
+    void replaceRegions(const RegionTable& regions);
+    void applySettings(const EngineSettings& settings);
+    void enforceHistoryBudget();
+    void rebuildHistory(std::vector<std::shared_ptr<CommandRecord>> records, int index, std::optional<int> cleanIndex);
+    CommandRecord* openCommand();
+
+    SimulationPort& m_port;
+    QUndoStack m_undo;
+    Scene m_scene;
+    std::optional<SceneScript> m_script;
+    RegionTable m_regions;
+    EngineSettings m_settings;
+    QString m_filePath;
+    std::uint64_t m_restoreSerial = 0;  // frames older than the last restore or load are stale
+    std::size_t m_historyBudget = defaultHistoryBudget;
+    bool m_rebuilding = false;          // rebuildHistory() replays commands without applying them
+};
+
+EngineSettings engineSettingsOf(const Scene& scene, const QString& backend, int device);
+
+} // namespace vf::model

@@ -1,0 +1,37 @@
+#pragma once
+// What the document needs from the live simulation. The app implements it with a worker thread
+// (app/SimulationController); every call only queues a request and returns at once, and the
+// requests run in the order they were made, between steps, never racing one.
+#include "model/EngineSettings.h"
+#include "model/Scene.h"
+#include "model/StateSlot.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace vf::model {
+
+class SimulationPort {
+public:
+    virtual ~SimulationPort() = default;
+
+    // A new simulation with these settings, for this scene (its canvas and timed strokes): with
+    // `start` filled, it continues from that state, else it starts from the scene's regions and
+    // its drops at t = 0.
+    virtual void load(const Scene& scene, const EngineSettings& settings, const StateSlotPtr& start) = 0;
+    // The same state carried on under other settings (another backend, grid, spacing...).
+    virtual void configure(const EngineSettings& settings) = 0;
+
+    virtual void snapshot(const StateSlotPtr& into) = 0;
+    virtual void restore(const StateSlotPtr& from) = 0;
+
+    virtual void addRegion(const std::vector<sim::Polygon>& contours) = 0;
+    virtual void drop(sim::Vec2 center, double radius) = 0;
+    // The pen moved from `from` to `to` in `seconds` of wall time; it acts during the next step.
+    virtual void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds) = 0;
+
+    // How many requests have been made so far; a frame says how many it has seen (Frame::serial).
+    virtual std::uint64_t requestCount() const = 0;
+};
+
+} // namespace vf::model
