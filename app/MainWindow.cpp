@@ -30,6 +30,9 @@ namespace {
 
 constexpr int maxRecentFiles = 8;
 const QString recentKey = QStringLiteral("files/recent");
+// The backend and device last chosen, for new documents.
+const QString backendKey = QStringLiteral("simulation/backend");
+const QString deviceKey = QStringLiteral("simulation/device");
 
 sim::Vec2 toVec(QPointF p)
 {
@@ -275,6 +278,8 @@ void MainWindow::connectDocument()
     connect(&m_document, &model::Document::regionChanged, this, [this] { m_canvas->setRegions(m_document.regions()); });
     connect(&m_document, &model::Document::settingsChanged, this, [this](const model::EngineSettings& s) {
         m_panel->setSettings(s);
+        QSettings().setValue(backendKey, s.backend);
+        QSettings().setValue(deviceKey, s.device);
         m_marblingAction->setChecked(s.flow.viscosity == model::marblingViscosity);
         m_shapeDesignAction->setChecked(s.flow.viscosity == model::shapeDesignViscosity);
     });
@@ -331,7 +336,9 @@ model::Drawing MainWindow::drawing() const
 
 void MainWindow::newDocument()
 {
-    m_document.openScene(blankScene(), QStringLiteral("opencl"));
+    const QSettings settings;
+    m_document.openScene(blankScene(), settings.value(backendKey, QStringLiteral("opencl")).toString(),
+                         settings.value(deviceKey, -1).toInt());
     m_canvas->setBackground(m_document.scene().canvas.background);
     m_canvas->fitToWindow();
     updateTitle();

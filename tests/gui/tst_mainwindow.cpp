@@ -1,0 +1,376 @@
+// The main window, driven as a user drives it: real widgets, QTest mouse and key events, the real
+// simulation worker (reference backend, paused, stepped explicitly so that every run is the
+// same). Each test checks the document, the undo stack and the geometry, not pixels.
+#include "app/ExportDialog.h"
+#include "app/MainWindow.h"
+#include "app/Recovery.h"
+#include "model/SceneFile.h"
+#include "render/Exporter.h"
+
+#include <QAction>
+#include <QDialogButtonBox>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QXmlStreamReader>
+
+using namespace vf;
+using namespace vf::app;
+
+namespace {
+
+using Geometry = std::vector<std::vector<sim::Polygon>>;
+
+model::Scene smallScene()
+{
+    model::Scene scene;
+    scene.flow.gridX = scene.flow.gridY = 32;
+    scene.time.dt = 0.01;
+    scene.tracking.maxSpacing = 0.01;
+    scene.regions.push_back({QStringLiteral("ink"), QColor(0x1d, 0x35, 0x57), true, model::CircleShape{{0.5, 0.5}, 0.2}});
+    scene.regions.push_back({QStringLiteral("slab"), QColor(0xe6, 0x39, 0x46), true,
+                             model::RectShape{{0.1, 0.1}, {0.3, 0.1}}});
+    return scene;
+}
+
+Geometry geometry(MainWindow& w)
+{
+    w.simulation().sync();
+    return w.simulation().frame()->regions;
+}
+
+double largestMove(const Geometry& a, const Geometry& b)
+{
+    // Vertex counts change as contours refine; compare the centroids of each region's contours.
+    double most = 0.0;
+    for (std::size_t r = 0; r < std::min(a.size(), b.size()); ++r) {
+        auto centroid = [](const std::vector<sim::Polygon>& contours) {
+            sim::Vec2 sum(0.0);
+            std::size_t n = 0;
+            for (const auto& c : contours)
+                for (const sim::Vec2& p : c)
+                    sum += p, ++n;
+            return n ? sum / double(n) : sum;
+        };
+        most = std::max(most, glm::length(centroid(a[r]) - centroid(b[r])));
+    }
+    return most;
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("vectorfluid-tests"));
+        QCoreApplication::setApplicationName(QStringLiteral("tst_mainwindow"));
+        QSettings().clear();
+        QSettings().setValue(QStringLiteral("simulation/backend"), QStringLiteral("reference"));
+        QVERIFY(m_dir.isValid());
+        qputenv("VF_RECOVERY_DIR", m_dir.filePath(QStringLiteral("recovery")).toUtf8());
+        m_scenePath = m_dir.filePath(QStringLiteral("small.vfscene"));
+        QCOMPARE(model::writeSceneFile(smallScene(), m_scenePath), QString());
+    }
+
+    void init()
+    {
+        m_window = std::make_unique<MainWindow>();
+        m_window->setAsk([this](const QString&, const QString& text, QMessageBox::StandardButtons) {
+            m_questions << text;
+            return m_answer;
+        });
+        m_window->setReport([this](const QString&, const QString& text) { m_reports << text; });
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        QVERIFY(m_window->openFile(m_scenePath));
+        m_window->simulation().setPlaying(false);
+        geometry(*m_window);
+        m_reports.clear();
+        m_questions.clear();
+    }
+
+    void cleanup()
+    {
+        if (m_window)
+            m_window->document().undoStack().setClean();  // no prompt on close
+        m_window.reset();
+    }
+
+    void dropToolClickAddsARegionShownInTheRegionsView()
+    {
+        MainWindow& w = *m_window;
+        w.findChild<QAction*>(QStringLiteral("toolDrop"))->trigger();
+        const QPoint at = w.canvas().mapFromCanvas({0.75, 0.75}).toPoint();
+        QTest::mouseClick(&w.canvas(), Qt::LeftButton, {}, at);
+        const Geometry g = geometry(w);
+        QCOMPARE(g.size(), std::size_t(3));
+        QCOMPARE(w.document().regions().size(), std::size_t(3));
+        QCOMPARE(w.regionView().model()->rowCount(), 3);
+        QCOMPARE(w.regionView().model()->index(0, 0).data().toString(), QStringLiteral("drop"));  // on top
+        QCOMPARE(w.document().undoStack().count(), 1);
+        // The new ink is a disc around where the click landed.
+        sim::Vec2 sum(0.0);
+        for (const sim::Vec2& p : g[2][0])
+            sum += p;
+        const sim::Vec2 centre = sum / double(g[2][0].size());
+        QVERIFY2(glm::length(centre - sim::Vec2(0.75, 0.75)) < 0.01, "the drop landed where the click was");
+    }
+
+    void stylusDragMovesInk()
+    {
+        MainWindow& w = *m_window;
+        const Geometry before = geometry(w);
+        w.findChild<QAction*>(QStringLiteral("toolStylus"))->trigger();
+        QWidget& canvas = w.canvas();
+        QTest::mousePress(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.2, 0.5}).toPoint());
+        for (int i = 1; i <= 6; ++i) {
+            QTest::mouseMove(&canvas, canvas.mapFromCanvas({0.2 + 0.1 * i, 0.5}).toPoint(), 15);
+        }
+        QTest::mouseRelease(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.8, 0.5}).toPoint(), 15);
+        for (int i = 0; i < 10; ++i)
+            w.simulation().stepOnce();
+        const Geometry after = geometry(w);
+        QCOMPARE(w.document().undoStack().count(), 1);
+        QCOMPARE(w.document().undoStack().text(0), QStringLiteral("Stylus stroke"));
+        QVERIFY2(largestMove(before, after) > 0.005, "the stroke pushed the ink along");
+    }
+
+    void undoAndRedoRestoreExactGeometry()
+    {
+        MainWindow& w = *m_window;
+        for (int i = 0; i < 3; ++i)
+            w.simulation().stepOnce();
+        const Geometry start = geometry(w);
+        w.findChild<QAction*>(QStringLiteral("toolDrop"))->trigger();
+        QTest::mouseClick(&w.canvas(), Qt::LeftButton, {}, w.canvas().mapFromCanvas({0.5, 0.45}).toPoint());
+        for (int i = 0; i < 5; ++i)
+            w.simulation().stepOnce();
+        const Geometry end = geometry(w);
+        QVERIFY(end != start);
+
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(geometry(w) == start);
+        QCOMPARE(w.document().regions().size(), std::size_t(2));
+        w.simulation().stepOnce();  // flow after the undo is not part of any command
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QVERIFY(geometry(w) == end);
+        QCOMPARE(w.document().regions().size(), std::size_t(3));
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(geometry(w) == start);
+    }
+
+    void recolourRenameAndReorderThroughTheViewAreUndoable()
+    {
+        MainWindow& w = *m_window;
+        QListView& view = w.regionView();
+        QAbstractItemModel& model = *view.model();
+        // Rename in place: select the top row, F2, type, Enter.
+        view.setCurrentIndex(model.index(0, 0));
+        QTest::keyClick(&view, Qt::Key_F2);
+        auto* editor = view.findChild<QLineEdit*>();
+        QVERIFY(editor);
+        editor->selectAll();
+        QTest::keyClicks(editor, QStringLiteral("header"));
+        QTest::keyClick(editor, Qt::Key_Return);
+        QCOMPARE(w.document().regions()[1].name, QStringLiteral("header"));
+        // Recolour through the model the view shows (the colour dialog itself is Qt's).
+        QVERIFY(model.setData(model.index(1, 0), QColor(Qt::darkGreen), model::RegionListModel::ColorRole));
+        QCOMPARE(w.document().regions()[0].color, QColor(Qt::darkGreen));
+        // Reorder with the dock's Lower button: the top region goes under.
+        view.setCurrentIndex(model.index(0, 0));
+        QTest::mouseClick(w.findChild<QPushButton*>(QStringLiteral("lower")), Qt::LeftButton);
+        QCOMPARE(w.document().regions()[0].name, QStringLiteral("header"));
+        QCOMPARE(model.index(1, 0).data().toString(), QStringLiteral("header"));
+        QCOMPARE(w.document().undoStack().count(), 3);
+
+        w.document().undoStack().undo();
+        QCOMPARE(w.document().regions()[1].name, QStringLiteral("header"));
+        w.document().undoStack().undo();
+        QCOMPARE(w.document().regions()[0].color, QColor(0x1d, 0x35, 0x57));
+        w.document().undoStack().undo();
+        QCOMPARE(w.document().regions()[1].name, QStringLiteral("slab"));
+    }
+
+    void saveAndOpenRoundTripExactly()
+    {
+        MainWindow& w = *m_window;
+        w.document().drop({0.3, 0.7}, 0.08, Qt::magenta);
+        for (int i = 0; i < 4; ++i)
+            w.simulation().stepOnce();
+        QVERIFY(w.document().setRegionName(0, QStringLiteral("base")));
+        const Geometry saved = geometry(w);
+        const QString path = m_dir.filePath(QStringLiteral("work.vfproj"));
+        QVERIFY(w.saveTo(path));
+        QVERIFY(!w.document().isModified());
+
+        MainWindow other;
+        other.setReport([this](const QString&, const QString& text) { m_reports << text; });
+        QVERIFY(other.openFile(path));
+        other.simulation().setPlaying(false);
+        QVERIFY(geometry(other) == saved);
+        QVERIFY(other.document().regions() == w.document().regions());
+        QCOMPARE(other.document().undoStack().count(), 2);
+        QVERIFY(!other.document().isModified());
+        // The history came along: undoing both commands reaches the scene's start.
+        other.document().undoStack().undo();
+        other.document().undoStack().undo();
+        QCOMPARE(geometry(other).size(), std::size_t(2));
+        QCOMPARE(other.document().regions()[0].name, QStringLiteral("ink"));
+        QVERIFY(m_reports.isEmpty());
+    }
+
+    void exportDialogWritesFilesThatReadersAccept()
+    {
+        MainWindow& w = *m_window;
+        w.simulation().sync();
+        ExportDialog dialog(w.drawing(), &w);
+        const QString svg = m_dir.filePath(QStringLiteral("picture.svg"));
+        dialog.findChild<QLineEdit*>(QStringLiteral("path"))->setText(svg);
+        dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)
+            ? QTest::mouseClick(dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok), Qt::LeftButton)
+            : QTest::mouseClick(dialog.findChild<QPushButton*>(QStringLiteral("export")), Qt::LeftButton);
+        QCOMPARE(dialog.lastError(), QString());
+        QFile file(svg);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QXmlStreamReader xml(&file);
+        int paths = 0;
+        while (!xml.atEnd())
+            if (xml.readNext() == QXmlStreamReader::StartElement && xml.name() == QLatin1String("path"))
+                ++paths;
+        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+        QCOMPARE(paths, 2);
+    }
+
+    void switchingModesChangesViscosity()
+    {
+        MainWindow& w = *m_window;
+        QCOMPARE(w.document().settings().flow.viscosity, model::marblingViscosity);
+        w.findChild<QAction*>(QStringLiteral("modeShapeDesign"))->trigger();
+        QCOMPARE(w.document().settings().flow.viscosity, model::shapeDesignViscosity);
+        QCOMPARE(w.document().undoStack().count(), 1);
+        // Shape design: motion dies right after a stroke (paper §5.2).
+        w.document().beginStroke();
+        w.document().stroke({0.2, 0.5}, {0.8, 0.5}, 0.05, 0.1);
+        w.simulation().stepOnce();
+        const Geometry a = geometry(w);
+        for (int i = 0; i < 20; ++i)
+            w.simulation().stepOnce();
+        const Geometry b = geometry(w);
+        for (int i = 0; i < 5; ++i)
+            w.simulation().stepOnce();
+        QVERIFY2(largestMove(b, geometry(w)) < 0.1 * std::max(largestMove(a, b), 1e-9),
+                 "in shape design the ink stops soon after the stroke");
+        w.document().undoStack().undo();  // the stroke
+        w.document().undoStack().undo();  // the mode
+        QCOMPARE(w.document().settings().flow.viscosity, model::marblingViscosity);
+        QVERIFY(w.findChild<QAction*>(QStringLiteral("modeMarbling"))->isChecked());
+    }
+
+    void autosaveRecoversAfterACrash()
+    {
+        MainWindow& w = *m_window;
+        w.document().drop({0.6, 0.3}, 0.07, Qt::darkCyan);
+        w.simulation().stepOnce();
+        const Geometry lost = geometry(w);
+        const model::RegionTable looks = w.document().regions();
+        QSignalSpy saved(&w.recovery(), &Recovery::saved);
+        w.recovery().saveNow();
+        QVERIFY(saved.wait(10000));
+        QCOMPARE(saved.front().front().toString(), QString());
+        const QString recoveryFile = w.recovery().filePath();
+        m_window.reset();  // a crash: no close, no clean exit, the file stays
+        QVERIFY(QFile::exists(recoveryFile));
+
+        m_answer = QMessageBox::Yes;
+        MainWindow next;
+        QVERIFY(next.recovery().hasCrashedSession());
+        QVERIFY(next.openFile(next.recovery().filePath()));
+        next.simulation().setPlaying(false);
+        QVERIFY(geometry(next) == lost);
+        QVERIFY(next.document().regions() == looks);
+        QCOMPARE(next.document().undoStack().count(), 1);
+        next.document().undoStack().setClean();
+        next.close();  // a clean exit removes the recovery file
+        QVERIFY(!QFile::exists(recoveryFile));
+    }
+
+    void brokenFilesLeaveTheDocumentAlone()
+    {
+        MainWindow& w = *m_window;
+        w.document().drop({0.6, 0.6}, 0.05, Qt::red);
+        const Geometry before = geometry(w);
+        const model::RegionTable looks = w.document().regions();
+
+        const QString badJson = m_dir.filePath(QStringLiteral("bad.vfscene"));
+        QFile f(badJson);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{\"vectorfluid\": 1, \"canvas\": ");
+        f.close();
+        const QString badProject = m_dir.filePath(QStringLiteral("bad.vfproj"));
+        QFile p(badProject);
+        QVERIFY(p.open(QIODevice::WriteOnly));
+        p.write("VFPROJ 9\n");
+        p.close();
+        const QString badSvg = m_dir.filePath(QStringLiteral("bad.svg"));
+        QFile s(badSvg);
+        QVERIFY(s.open(QIODevice::WriteOnly));
+        s.write("<svg xmlns=\"http://www.w3.org/2000/svg\"><path d=\"M 0 0 L 10\"/></svg>");
+        s.close();
+
+        QVERIFY(!w.openFile(badJson));
+        QVERIFY(!w.openFile(badProject));
+        QVERIFY(!w.importSvg(badSvg));
+        QCOMPARE(m_reports.size(), 3);
+        QVERIFY2(m_reports[0].contains(QStringLiteral("bad.vfscene")), qPrintable(m_reports[0]));
+        QVERIFY2(m_reports[1].contains(QStringLiteral("bad.vfproj")), qPrintable(m_reports[1]));
+        QVERIFY2(m_reports[2].contains(QStringLiteral("bad.svg")), qPrintable(m_reports[2]));
+        for (const QString& line : m_reports)
+            QVERIFY2(!line.contains('\n'), qPrintable(line));
+        QVERIFY(geometry(w) == before);
+        QVERIFY(w.document().regions() == looks);
+        QCOMPARE(w.document().undoStack().count(), 1);
+    }
+
+    void textBecomesInkRegions()
+    {
+        MainWindow& w = *m_window;
+        w.insertText(QStringLiteral("VF"), {0.3, 0.9});
+        const Geometry g = geometry(w);
+        QCOMPARE(g.size(), std::size_t(3));
+        QCOMPARE(w.document().regions().back().name, QStringLiteral("VF"));
+        QVERIFY(g[2].size() >= 2);  // one outline per letter
+        QCOMPARE(w.document().undoStack().count(), 1);
+        w.document().undoStack().undo();
+        QCOMPARE(geometry(w).size(), std::size_t(2));
+    }
+
+    void closingWithChangesAsks()
+    {
+        MainWindow& w = *m_window;
+        w.document().drop({0.6, 0.6}, 0.05, Qt::red);
+        m_answer = QMessageBox::Cancel;
+        QVERIFY(!w.close());
+        QCOMPARE(m_questions.size(), 1);
+        m_answer = QMessageBox::Discard;
+        QVERIFY(w.close());
+    }
+
+private:
+    QTemporaryDir m_dir;
+    QString m_scenePath;
+    std::unique_ptr<MainWindow> m_window;
+    QStringList m_reports;
+    QStringList m_questions;
+    QMessageBox::StandardButton m_answer = QMessageBox::Discard;
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"
