@@ -46,6 +46,7 @@ struct Context {
     double fillOpacity = 1.0;
     double opacity = 1.0;
     bool visible = true;
+    bool evenOdd = false;  // fill-rule; SVG's default is nonzero
 };
 
 // Elements whose content is never drawn where it stands: referenced resources and metadata.
@@ -102,6 +103,25 @@ Outline rectOutline(Vec2 p, Vec2 size, Vec2 r)
               lineTo({q.x, q.y - r.y}), quarterArc({q.x - r.x, q.y - r.y}, r, 0.0),
               lineTo({p.x + r.x, q.y}), quarterArc({p.x + r.x, q.y - r.y}, r, 0.5 * pi),
               lineTo({p.x, p.y + r.y}), quarterArc({p.x + r.x, p.y + r.y}, r, pi)}}};
+}
+
+// Whether SVG's nonzero rule fills these non-crossing contours as the regions' even-odd rule does.
+// Just inside contour i, the winding number is the sum of the directions of i and of the contours
+// around it, and the even-odd count is one more than the number of contours around it.
+bool nonzeroFillsEvenOdd(const std::vector<sim::Polygon>& contours, const std::vector<int>& directions)
+{
+    for (std::size_t i = 0; i < contours.size(); ++i) {
+        int winding = directions[i], depth = 0;
+        for (std::size_t j = 0; j < contours.size(); ++j) {
+            if (j != i && sim::windingNumber(contours[j], contours[i].front()) != 0) {
+                winding += directions[j];
+                ++depth;
+            }
+        }
+        if ((winding != 0) != (depth % 2 == 0))
+            return false;
+    }
+    return true;
 }
 
 class Importer {
@@ -217,6 +237,8 @@ private:
             context.fill = paintValue(fill, context.currentColor, parent.fill);
         context.fillOpacity = opacityValue(u"fill-opacity"_s, parent.fillOpacity);
         context.opacity = parent.opacity * opacityValue(u"opacity"_s, 1.0);
+        if (const QString rule = property(u"fill-rule"_s); rule == u"evenodd" || rule == u"nonzero")
+            context.evenOdd = rule == u"evenodd";
         if (const QString visibility = property(u"visibility"_s); !visibility.isEmpty() && visibility != u"inherit")
             context.visible = visibility == u"visible";
         return context;
@@ -353,6 +375,7 @@ private:
             fail(u"shape \"%1\" would need more than %2 vertices at spacing %3"_s.arg(name).arg(limits::maxPolygonPoints).arg(m_spacing));
 
         ImportedShape imported{name, *context.fill, {}};
+        std::vector<int> directions;  // of each contour as drawn, for the fill rule
         imported.color.setAlphaF(static_cast<float>(imported.color.alphaF() * context.fillOpacity * context.opacity));
         for (const sim::Polygon& polyline : svg::flatten(shape, m_spacing)) {
             std::optional<sim::Polygon> contour = startingContour(polyline, m_spacing);
@@ -361,6 +384,7 @@ private:
             if (!sim::isSimple(*contour))
                 fail(u"shape \"%1\" crosses itself"_s.arg(name));
             imported.contours.push_back(std::move(*contour));
+            directions.push_back(sim::signedArea(polyline) > 0.0 ? 1 : -1);
         }
         if (imported.contours.empty()) {
             m_notes << u"%1: %2 \"%3\" skipped: it has no area"_s.arg(m_where, tag, name);
@@ -371,6 +395,8 @@ private:
             contours.push_back(&polygon);
         if (sim::countCrossings(contours) > 0)
             fail(u"shape \"%1\" crosses itself"_s.arg(name));
+        if (!context.evenOdd && !nonzeroFillsEvenOdd(imported.contours, directions))
+            m_notes << u"%1: %2 \"%3\" is filled even-odd: its holes drawn the same way round as their outline, which fill-rule=\"nonzero\" fills, are holes now"_s.arg(m_where, tag, name);
         m_shapes.push_back(std::move(imported));
     }
 

@@ -91,6 +91,14 @@ private:
         m_previousKind = kind;
     }
 
+    bool lineTo(std::optional<Vec2> to, char kind)
+    {
+        if (!to)
+            return false;
+        add(line(*to), *to, kind);
+        return true;
+    }
+
     // Reads one set of the current command's arguments and adds its segment.
     bool command()
     {
@@ -113,17 +121,15 @@ private:
             m_closed = true;
             m_previousKind = 'Z';
             return true;
-        case 'L': {
-            const auto p = point();
-            return p && (add(line(*p), *p, kind), true);
-        }
+        case 'L':
+            return lineTo(point(), kind);
         case 'H': {
             const auto x = coordinate(from.x);
-            return x && (add(line({*x, from.y}), {*x, from.y}, kind), true);
+            return lineTo(x ? std::optional(Vec2(*x, from.y)) : std::nullopt, kind);
         }
         case 'V': {
             const auto y = coordinate(from.y);
-            return y && (add(line({from.x, *y}), {from.x, *y}, kind), true);
+            return lineTo(y ? std::optional(Vec2(from.x, *y)) : std::nullopt, kind);
         }
         case 'C': {
             const auto c1 = point(), c2 = c1 ? point() : std::nullopt, p = c2 ? point() : std::nullopt;

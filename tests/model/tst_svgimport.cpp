@@ -377,6 +377,19 @@ private slots:
         QVERIFY(std::abs(filledArea(shape) - (0.64 - 0.16)) < 1e-12);
     }
 
+    void nonzeroHolesDrawnSameWayWarned()
+    {
+        // Both squares clockwise: nonzero fills the inner one, even-odd (regions) makes it a hole.
+        const QString d = u"M10 10 H90 V90 H10 Z M30 30 H70 V70 H30 Z"_s;
+        const SvgImport nonzero = importBody(u"<path id='p' d='%1'/>"_s.arg(d));
+        QVERIFY2(nonzero.ok(), qPrintable(nonzero.error));
+        QCOMPARE(nonzero.warnings.size(), 1);
+        QVERIFY2(nonzero.warnings.front().contains(u"path \"p\" is filled even-odd"_s), qPrintable(nonzero.warnings.front()));
+        QVERIFY(importBody(u"<g fill-rule='evenodd'><path d='%1'/></g>"_s.arg(d)).warnings.isEmpty());
+        // Drawn the other way round, the hole is a hole under both rules.
+        QVERIFY(importBody(u"<path d='M10 10 H90 V90 H10 Z M30 30 V70 H70 V30 Z'/>"_s).warnings.isEmpty());
+    }
+
     void degenerateSubpathsDropped()
     {
         // A subpath that doubles back on itself, one of two points, and a lone moveto.
