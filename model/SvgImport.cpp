@@ -396,7 +396,7 @@ private:
         if (sim::countCrossings(contours) > 0)
             fail(u"shape \"%1\" crosses itself"_s.arg(name));
         if (!context.evenOdd && !nonzeroFillsEvenOdd(imported.contours, directions))
-            m_notes << u"%1: %2 \"%3\" is filled even-odd: its holes drawn the same way round as their outline, which fill-rule=\"nonzero\" fills, are holes now"_s.arg(m_where, tag, name);
+            m_notes << u"%1: %2 \"%3\": a hole drawn the same way round as its outline, filled under fill-rule=\"nonzero\", is a hole here (regions fill even-odd)"_s.arg(m_where, tag, name);
         m_shapes.push_back(std::move(imported));
     }
 
