@@ -5,6 +5,7 @@
 #include <QPainterPath>
 #include <QTransform>
 
+#include <optional>
 
 namespace vf::model {
 namespace {
@@ -21,7 +22,6 @@ std::vector<sim::Polygon> textContours(const QString& text, const QFont& font, s
     QFont outlineFont = font;
     outlineFont.setPixelSize(kOutlinePixelSize);
     outlineFont.setHintingPreference(QFont::PreferNoHinting);
-    outlineFont.setKerning(true);
 
     QPainterPath path;
     path.addText(0.0, 0.0, outlineFont, text);
