@@ -3,7 +3,6 @@
 // the viscosity follow each other, and the ranges are the scene format's.
 #include "app/SimulationPanel.h"
 
-#include <QButtonGroup>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
