@@ -1,0 +1,283 @@
+#include "app/ExportDialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGuiApplication>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardPaths>
+
+#include <cmath>
+
+namespace vf::app {
+namespace {
+
+struct FormatEntry {
+    const char* name;
+    const char* suffix;
+};
+constexpr FormatEntry kFormats[] = {{"SVG", "svg"}, {"PDF", "pdf"}, {"EPS", "eps"}, {"PNG", "png"}};
+
+constexpr double kPointsPerInch = 72.0;
+constexpr double kMillimetresPerInch = 25.4;
+const QString kPixels = QStringLiteral("px");
+
+// The path with the format's suffix: an export suffix already there is replaced, anything else
+// (no suffix, or a dot in a plain name) is kept and the suffix appended.
+QString pathForFormat(const QString& path, const QString& suffix)
+{
+    QString base = path;
+    if (render::isExportSuffix(path))
+        base.chop(QFileInfo(path).suffix().size() + 1);
+    return base + u'.' + suffix;
+}
+
+// Explicit names, so that the settings do not depend on what main() set up.
+QSettings appSettings()
+{
+    return QSettings(QStringLiteral("vectorfluid"), QStringLiteral("vectorfluid"));
+}
+
+} // namespace
+
+ExportDialog::ExportDialog(model::Drawing drawing, QWidget* parent) : QDialog(parent), m_drawing(std::move(drawing))
+{
+    setWindowTitle(tr("Export"));
+
+    m_path = new QLineEdit;
+    m_path->setObjectName(QStringLiteral("path"));
+    auto* browse = new QPushButton(tr("Browse…"));
+    browse->setObjectName(QStringLiteral("browse"));
+    browse->setAutoDefault(false);  // Enter in a field exports; it never opens the file dialog
+    auto* pathRow = new QHBoxLayout;
+    pathRow->addWidget(m_path, 1);
+    pathRow->addWidget(browse);
+
+    m_format = new QComboBox;
+    m_format->setObjectName(QStringLiteral("format"));
+    for (const FormatEntry& format : kFormats)
+        m_format->addItem(QString::fromLatin1(format.name), QString::fromLatin1(format.suffix));
+
+    m_pageWidthBox = new QDoubleSpinBox;
+    m_pageWidthBox->setObjectName(QStringLiteral("pageWidth"));
+    m_pageWidthBox->setRange(0.01, 1e6);
+    m_pageWidthBox->setDecimals(2);
+    m_unit = new QComboBox;
+    m_unit->setObjectName(QStringLiteral("unit"));
+    for (const QString& unit : {QStringLiteral("pt"), QStringLiteral("mm"), QStringLiteral("in"), kPixels})
+        m_unit->addItem(unit, unit);
+    auto* widthRow = new QHBoxLayout;
+    widthRow->addWidget(m_pageWidthBox, 1);
+    widthRow->addWidget(m_unit);
+    m_pageHeight = new QLabel;
+    m_pageHeight->setObjectName(QStringLiteral("pageHeight"));
+
+    m_dpi = new QSpinBox;
+    m_dpi->setObjectName(QStringLiteral("dpi"));
+    m_dpi->setRange(1, 4800);
+    m_dpi->setSuffix(tr(" dpi"));
+
+    m_background = new QCheckBox(tr("Paint the canvas background"));
+    m_background->setObjectName(QStringLiteral("background"));
+    m_curves = new QComboBox;
+    m_curves->setObjectName(QStringLiteral("curves"));
+    m_curves->addItem(tr("Bézier curves"), true);
+    m_curves->addItem(tr("Exact polyline"), false);
+
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel);
+    QPushButton* exportButton = buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
+    exportButton->setObjectName(QStringLiteral("export"));
+    exportButton->setDefault(true);
+
+    auto* form = new QFormLayout(this);
+    form->addRow(tr("File:"), pathRow);
+    form->addRow(tr("Format:"), m_format);
+    form->addRow(tr("Page width:"), widthRow);
+    form->addRow(tr("Page height:"), m_pageHeight);
+    form->addRow(tr("Resolution:"), m_dpi);
+    form->addRow(tr("Background:"), m_background);
+    form->addRow(tr("Curves:"), m_curves);
+    form->addRow(buttons);
+
+    restoreSettings();
+
+    connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
+    connect(m_path, &QLineEdit::textChanged, this, &ExportDialog::pathEdited);
+    connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::formatPicked);
+    connect(m_pageWidthBox, &QDoubleSpinBox::valueChanged, this, &ExportDialog::pageWidthEdited);
+    connect(m_unit, &QComboBox::currentIndexChanged, this, &ExportDialog::unitPicked);
+    connect(m_dpi, &QSpinBox::valueChanged, this, &ExportDialog::dpiEdited);
+    connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::exportFile);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    pathEdited();
+    updatePageHeight();
+}
+
+QString ExportDialog::filePath() const
+{
+    return pathForFormat(m_path->text().trimmed(), m_format->currentData().toString());
+}
+
+render::ExportOptions ExportDialog::options() const
+{
+    render::ExportOptions options;
+    options.bezier = m_curves->currentData().toBool();
+    options.pageWidth = m_pageWidth;
+    options.dpi = m_dpi->value();
+    options.background = m_background->isChecked();
+    return options;
+}
+
+void ExportDialog::browse()
+{
+    QStringList filters;
+    for (const FormatEntry& format : kFormats)
+        filters << QStringLiteral("%1 (*.%2)").arg(QLatin1String(format.name), QLatin1String(format.suffix));
+    QFileDialog dialog(this, tr("Export to"), m_path->text());
+    dialog.setOption(QFileDialog::DontUseNativeDialog);
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setNameFilters(filters);
+    dialog.selectNameFilter(filters.value(m_format->currentIndex()));
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
+        return;
+    const QString chosen = dialog.selectedFiles().constFirst();
+    const qsizetype filter = std::max<qsizetype>(0, filters.indexOf(dialog.selectedNameFilter()));
+    m_path->setText(render::isExportSuffix(chosen) ? chosen
+                                                   : pathForFormat(chosen, QString::fromLatin1(kFormats[filter].suffix)));
+}
+
+void ExportDialog::exportFile()
+{
+    if (m_path->text().trimmed().isEmpty()) {
+        m_lastError = tr("Choose a file to export to.");
+    } else {
+        m_path->setText(filePath());
+        QGuiApplication::setOverrideCursor(Qt::WaitCursor);
+        m_lastError = render::exportDrawing(m_drawing, filePath(), options());
+        QGuiApplication::restoreOverrideCursor();
+    }
+    if (!m_lastError.isEmpty())
+        return showError();
+    saveSettings();
+    accept();
+}
+
+// Window-modal but not blocking (open(), not exec()), so that nothing waits on the box.
+void ExportDialog::showError()
+{
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Export failed"), m_lastError, QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("exportError"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void ExportDialog::formatPicked()
+{
+    if (!m_path->text().trimmed().isEmpty())
+        m_path->setText(filePath());
+    updateEnabled();
+}
+
+void ExportDialog::pathEdited()
+{
+    const int format = m_format->findData(QFileInfo(m_path->text().trimmed()).suffix().toLower());
+    if (format >= 0) {
+        const QSignalBlocker blocker(m_format); // the suffix is already right
+        m_format->setCurrentIndex(format);
+    }
+    updateEnabled();
+}
+
+void ExportDialog::pageWidthEdited()
+{
+    m_pageWidth = m_pageWidthBox->value() * pointsPerUnit();
+    updatePageHeight();
+}
+
+// The page keeps its size; only the number shown changes.
+void ExportDialog::unitPicked()
+{
+    {
+        const QSignalBlocker blocker(m_pageWidthBox);
+        m_pageWidthBox->setValue(m_pageWidth / pointsPerUnit());
+    }
+    updatePageHeight();
+    updateEnabled();
+}
+
+// A width in pixels keeps its pixel count; the page's size in points follows the resolution.
+void ExportDialog::dpiEdited()
+{
+    if (m_unit->currentData().toString() == kPixels)
+        pageWidthEdited();
+}
+
+void ExportDialog::updatePageHeight()
+{
+    const double aspect = m_drawing.width > 0 ? m_drawing.height / m_drawing.width : 0.0;
+    const QString unit = m_unit->currentData().toString();
+    const double height = m_pageWidth * aspect / pointsPerUnit();
+    m_pageHeight->setText(QStringLiteral("%1 %2").arg(unit == kPixels ? std::round(height) : height, 0, 'f',
+                                                       unit == kPixels ? 0 : 2)
+                              .arg(unit));
+}
+
+void ExportDialog::updateEnabled()
+{
+    m_dpi->setEnabled(m_format->currentData().toString() == QLatin1String("png") || m_unit->currentData().toString() == kPixels);
+}
+
+double ExportDialog::pointsPerUnit() const
+{
+    const QString unit = m_unit->currentData().toString();
+    if (unit == QLatin1String("mm"))
+        return kPointsPerInch / kMillimetresPerInch;
+    if (unit == QLatin1String("in"))
+        return kPointsPerInch;
+    if (unit == kPixels)
+        return kPointsPerInch / m_dpi->value();
+    return 1.0;
+}
+
+// Runs before the widgets' signals are connected: each stored value goes through its widget,
+// which clamps whatever an old or hand-edited settings file holds.
+void ExportDialog::restoreSettings()
+{
+    QSettings settings = appSettings();
+    settings.beginGroup(QStringLiteral("export"));
+    const render::ExportOptions defaults;
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    m_path->setText(settings.value(QStringLiteral("path"), QDir(documents).filePath(QStringLiteral("picture.svg"))).toString());
+    m_dpi->setValue(settings.value(QStringLiteral("dpi"), defaults.dpi).toInt());
+    m_unit->setCurrentIndex(std::max(0, m_unit->findData(settings.value(QStringLiteral("unit")).toString())));
+    m_pageWidthBox->setValue(settings.value(QStringLiteral("pageWidth"), defaults.pageWidth).toDouble() / pointsPerUnit());
+    m_pageWidth = m_pageWidthBox->value() * pointsPerUnit();
+    m_background->setChecked(settings.value(QStringLiteral("background"), defaults.background).toBool());
+    m_curves->setCurrentIndex(m_curves->findData(settings.value(QStringLiteral("bezier"), defaults.bezier).toBool()));
+}
+
+void ExportDialog::saveSettings() const
+{
+    QSettings settings = appSettings();
+    settings.beginGroup(QStringLiteral("export"));
+    const render::ExportOptions chosen = options();
+    settings.setValue(QStringLiteral("path"), filePath());
+    settings.setValue(QStringLiteral("dpi"), m_dpi->value());
+    settings.setValue(QStringLiteral("unit"), m_unit->currentData());
+    settings.setValue(QStringLiteral("pageWidth"), chosen.pageWidth);
+    settings.setValue(QStringLiteral("background"), chosen.background);
+    settings.setValue(QStringLiteral("bezier"), chosen.bezier);
+}
+
+} // namespace vf::app

@@ -1,0 +1,58 @@
+#pragma once
+// File > Export: writes the current picture through render::exportDrawing, with the page size,
+// resolution, background and curve options of the command line, remembered between sessions.
+#include "model/Drawing.h"
+#include "render/Exporter.h"
+
+#include <QDialog>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+
+namespace vf::app {
+
+class ExportDialog final : public QDialog {
+    Q_OBJECT
+
+public:
+    explicit ExportDialog(model::Drawing drawing, QWidget* parent = nullptr);
+
+    QString filePath() const;
+    render::ExportOptions options() const;
+    // Why the last export failed; empty after a success or before any attempt.
+    QString lastError() const { return m_lastError; }
+
+private:
+    void browse();
+    void exportFile();
+    void showError();
+    void formatPicked();
+    void pathEdited();
+    void pageWidthEdited();
+    void unitPicked();
+    void dpiEdited();
+    void updatePageHeight();
+    void updateEnabled();
+    double pointsPerUnit() const;
+    void restoreSettings();
+    void saveSettings() const;
+
+    model::Drawing m_drawing;
+    double m_pageWidth = render::ExportOptions{}.pageWidth;  // points; what the spin box shows in its unit
+    QString m_lastError;
+
+    QLineEdit* m_path = nullptr;
+    QComboBox* m_format = nullptr;
+    QDoubleSpinBox* m_pageWidthBox = nullptr;
+    QComboBox* m_unit = nullptr;
+    QLabel* m_pageHeight = nullptr;
+    QSpinBox* m_dpi = nullptr;
+    QCheckBox* m_background = nullptr;
+    QComboBox* m_curves = nullptr;
+};
+
+} // namespace vf::app
