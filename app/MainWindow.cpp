@@ -8,6 +8,7 @@
 #include "model/SceneFile.h"
 #include "model/SvgImport.h"
 #include "model/TextOutlines.h"
+#include "sim/opencl/DeviceList.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -109,13 +110,13 @@ void MainWindow::createActions()
     const struct {
         QString text;
         QKeySequence key;
-        Canvas::Tool tool;
+        Tool tool;
         const char* name;
     } toolList[] = {
-        {tr("&Drop"), QKeySequence(Qt::Key_D), Canvas::Tool::Drop, "toolDrop"},
-        {tr("&Stylus"), QKeySequence(Qt::Key_S), Canvas::Tool::Stylus, "toolStylus"},
-        {tr("&Text"), QKeySequence(Qt::Key_T), Canvas::Tool::Text, "toolText"},
-        {tr("&Pan"), QKeySequence(Qt::Key_H), Canvas::Tool::Pan, "toolPan"},
+        {tr("&Drop"), QKeySequence(Qt::Key_D), Tool::Drop, "toolDrop"},
+        {tr("&Stylus"), QKeySequence(Qt::Key_S), Tool::Stylus, "toolStylus"},
+        {tr("&Text"), QKeySequence(Qt::Key_T), Tool::Text, "toolText"},
+        {tr("&Pan"), QKeySequence(Qt::Key_H), Tool::Pan, "toolPan"},
     };
     QMenu* toolMenu = menuBar()->addMenu(tr("&Tools"));
     for (const auto& t : toolList) {
@@ -129,7 +130,7 @@ void MainWindow::createActions()
         toolMenu->addAction(a);
     }
     toolGroup->actions().front()->setChecked(true);
-    m_canvas->setTool(Canvas::Tool::Drop);
+    m_canvas->setTool(Tool::Drop);
 
     auto* colorButton = new QPushButton(tr("Ink"), this);
     colorButton->setObjectName(QStringLiteral("inkColor"));
@@ -246,7 +247,7 @@ void MainWindow::createDocks()
 
     auto* simulation = new QDockWidget(tr("Simulation"), this);
     simulation->setObjectName(QStringLiteral("simulationDock"));
-    m_panel = new SimulationPanel(simulation);
+    m_panel = new SimulationPanel(sim::opencl::listDevices(), simulation);
     simulation->setWidget(m_panel);
     addDockWidget(Qt::RightDockWidgetArea, simulation);
     connect(m_panel, &SimulationPanel::settingsEdited, &m_document, &model::Document::setSettings);
@@ -260,9 +261,7 @@ void MainWindow::createStatusBar()
     m_backendLabel = new QLabel(this);
     for (QLabel* l : {m_verticesLabel, m_stepsLabel, m_fpsLabel, m_backendLabel})
         statusBar()->addPermanentWidget(l);
-    connect(m_canvas, &Canvas::displayFpsChanged, this, [this](double fps) {
-        m_fpsLabel->setText(tr("%1 fps").arg(fps, 0, 'f', 0));
-    });
+    connect(m_canvas, &Canvas::displayFpsChanged, this, [this](int fps) { m_fpsLabel->setText(tr("%1 fps").arg(fps)); });
 }
 
 void MainWindow::connectDocument()
@@ -536,8 +535,11 @@ void MainWindow::exportPicture()
 void MainWindow::copySvg()
 {
     m_simulation.sync();
-    copyAsSvg(drawing());
-    statusBar()->showMessage(tr("Copied the picture as SVG"), 3000);
+    const QString error = copyAsSvg(drawing());
+    if (!error.isEmpty())
+        m_report(tr("Cannot copy"), error);
+    else
+        statusBar()->showMessage(tr("Copied the picture as SVG"), 3000);
 }
 
 // ---- Regions dock -------------------------------------------------------------------------------------
