@@ -82,7 +82,10 @@ EncodedProject encodeProject(const Project& project)
             encoded.error = u"state %1 is %2 bytes, over the format's limit of %3"_s.arg(states.size()).arg(raw.size()).arg(kMaxRawBlob);
             return;
         }
-        encoded.blobs.push_back(qCompress(raw));
+        // Stored, not deflated: a state's doubles shrink by about a fifth at ten times the cost of
+        // the whole save (docs/project-format.md, "Compression"). The zlib stream still carries
+        // its checksum, and readers take any level.
+        encoded.blobs.push_back(qCompress(raw, 0));
         const qint64 length = encoded.blobs.back().size();
         states.append(QJsonObject{{u"offset"_s, offset}, {u"length"_s, length}, {u"raw_length"_s, qint64(raw.size())}});
         offset += length;

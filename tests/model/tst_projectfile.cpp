@@ -323,6 +323,29 @@ private slots:
         QVERIFY(std::signbit(read.project.history[2].after->fluid->velocity.v[0]));
     }
 
+    // The writer stores its blobs without deflating them; a reader must take deflated ones too.
+    void deflatedStatesRead()
+    {
+        const Project written = fluidProject();
+        FileParts parts = partsOf(projectToBytes(written));
+        QJsonArray states = parts.manifest[u"states"_s].toArray();
+        QByteArray data;
+        for (qsizetype i = 0; i < states.size(); ++i) {
+            QJsonObject s = states[i].toObject();
+            const QByteArray blob = qCompress(qUncompress(parts.data.sliced(s[u"offset"_s].toInteger(), s[u"length"_s].toInteger())), 9);
+            s[u"offset"_s] = qint64(data.size());
+            s[u"length"_s] = qint64(blob.size());
+            states[i] = s;
+            data += blob;
+        }
+        QVERIFY(data.size() < parts.data.size());
+        parts.manifest[u"states"_s] = states;
+        parts.data = data;
+        const ProjectReadResult read = parseProject(fileOf(parts), u"deflated"_s);
+        QVERIFY2(read.ok(), qPrintable(read.error));
+        verifySameProject(read.project, written);
+    }
+
     void analyticProjectRoundTripsExactly()
     {
         const Project written = analyticProject();
