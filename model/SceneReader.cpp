@@ -2,184 +2,25 @@
 // and reported as one line "<file>: <key path or line:col>: <what is wrong>", so the rest of the
 // program only ever sees a valid Scene.
 #include "model/SceneFile.h"
+#include "model/SceneJson.h"
 
 #include "sim/AnalyticFlow.h"
 
 #include <QFile>
 #include <QHash>
-#include <QJsonArray>
 #include <QJsonDocument>
-#include <QJsonObject>
-#include <QStringList>
 
-#include <algorithm>
-#include <cmath>
-#include <initializer_list>
 #include <limits>
-#include <span>
-#include <utility>
 
 namespace vf::model {
 namespace {
 
 using namespace Qt::StringLiterals;
+using namespace json;
 
 constexpr int kVersion = 1;
 
 constexpr double kHuge = std::numeric_limits<double>::max();
-
-// Thrown by any check; parseScene turns it into the error line. `where` is a key path or line:col.
-struct ReadError {
-    QString where;
-    QString what;
-};
-
-// "regions[1].shape.circle.radius": where a value sits in the file, as the error line names it.
-// A default-constructed path is the top level.
-class KeyPath {
-public:
-    KeyPath() = default;
-    KeyPath key(const QString& name) const { return KeyPath(m_text.isEmpty() ? name : m_text + u'.' + name); }
-    KeyPath index(qsizetype i) const { return KeyPath(m_text + u'[' + QString::number(i) + u']'); }
-    [[noreturn]] void fail(const QString& what) const { throw ReadError{m_text, what}; }
-
-private:
-    explicit KeyPath(QString text) : m_text(std::move(text)) {}
-    QString m_text;
-};
-
-// Quotes text from the file for a message, short enough to keep the message one readable line.
-QString quoted(const QString& text)
-{
-    constexpr qsizetype kMaxShown = 40;
-    return u'"' + (text.size() > kMaxShown ? text.left(kMaxShown) + u"…"_s : text) + u'"';
-}
-
-QString describe(const QJsonValue& value)
-{
-    switch (value.type()) {
-    case QJsonValue::Null: return u"null"_s;
-    case QJsonValue::Bool: return value.toBool() ? u"true"_s : u"false"_s;
-    case QJsonValue::Double: return u"the number %1"_s.arg(value.toDouble());
-    case QJsonValue::String: return u"the string "_s + quoted(value.toString());
-    case QJsonValue::Array: return u"an array"_s;
-    case QJsonValue::Object: return u"an object"_s;
-    case QJsonValue::Undefined: break;
-    }
-    return u"nothing"_s;
-}
-
-// A JSON value with its key path: every check can say where it failed. Absent keys are
-// Undefined values, so optional and required keys are read the same way.
-class Field {
-public:
-    Field(QJsonValue value, KeyPath path) : m_value(std::move(value)), m_path(std::move(path)) {}
-
-    bool exists() const { return !m_value.isUndefined(); }
-    [[noreturn]] void fail(const QString& what) const { m_path.fail(what); }
-
-    Field member(const QString& key) const { return {object().value(key), m_path.key(key)}; }
-    Field element(const QJsonArray& array, qsizetype i) const { return {array.at(i), m_path.index(i)}; }
-
-    QJsonObject object() const
-    {
-        expectType(QJsonValue::Object, u"an object"_s);
-        return m_value.toObject();
-    }
-    QJsonArray array(qsizetype minSize, qsizetype maxSize) const
-    {
-        expectType(QJsonValue::Array, u"an array"_s);
-        const QJsonArray array = m_value.toArray();
-        if (minSize == maxSize && array.size() != minSize)
-            fail(u"must have exactly %1 elements, has %2"_s.arg(minSize).arg(array.size()));
-        if (array.size() < minSize)
-            fail(u"must have at least %1 elements, has %2"_s.arg(minSize).arg(array.size()));
-        if (array.size() > maxSize)
-            fail(u"must have at most %1 elements, has %2"_s.arg(maxSize).arg(array.size()));
-        return array;
-    }
-    QString string() const
-    {
-        expectType(QJsonValue::String, u"a string"_s);
-        return m_value.toString();
-    }
-    QString name() const
-    {
-        const QString text = string();
-        if (text.trimmed().isEmpty())
-            fail(u"must not be empty"_s);
-        return text;
-    }
-    bool boolean() const
-    {
-        expectType(QJsonValue::Bool, u"true or false"_s);
-        return m_value.toBool();
-    }
-    // JSON has no NaN or infinity literal and Qt refuses numbers that overflow ("NaN" as a string
-    // fails the type check), so the finiteness check guards against a future parser, not the file.
-    double number() const
-    {
-        expectType(QJsonValue::Double, u"a number"_s);
-        const double value = m_value.toDouble();
-        if (!std::isfinite(value))
-            fail(u"must be a finite number"_s);
-        return value;
-    }
-    double number(double min, double max) const
-    {
-        const double value = number();
-        if (value < min || value > max)
-            fail(u"must be in [%1, %2], is %3"_s.arg(min).arg(max).arg(value));
-        return value;
-    }
-    double nonNegative() const
-    {
-        const double value = number();
-        if (value < 0.0)
-            fail(u"must not be negative, is %1"_s.arg(value));
-        return value;
-    }
-    double positive(double max) const
-    {
-        const double value = number();
-        if (value <= 0.0)
-            fail(u"must be positive, is %1"_s.arg(value));
-        if (value > max)
-            fail(u"must be at most %1, is %2"_s.arg(max).arg(value));
-        return value;
-    }
-    std::int64_t integer(std::int64_t min, std::int64_t max) const
-    {
-        const double value = number();
-        if (std::floor(value) != value)
-            fail(u"must be a whole number, is %1"_s.arg(value));
-        if (value < static_cast<double>(min) || value > static_cast<double>(max))
-            fail(u"must be in [%1, %2], is %3"_s.arg(min).arg(max).arg(value));
-        return static_cast<std::int64_t>(value);
-    }
-    template <typename T>
-    T choice(std::initializer_list<std::pair<QString, T>> choices) const
-    {
-        const QString text = string();
-        QStringList names;
-        for (const auto& [name, value] : choices) {
-            if (name == text)
-                return value;
-            names << u'"' + name + u'"';
-        }
-        fail(u"must be one of %1, not %2"_s.arg(names.join(u", "_s), quoted(text)));
-    }
-
-private:
-    void expectType(QJsonValue::Type type, const QString& wanted) const
-    {
-        if (m_value.type() != type)
-            fail(u"must be %1, not %2"_s.arg(wanted, describe(m_value)));
-    }
-
-    QJsonValue m_value;
-    KeyPath m_path;
-};
 
 // ---- primitive values -------------------------------------------------------------------------
 
@@ -200,33 +41,6 @@ sim::Vec2 lengths(const Field& field)
     return {length(field.element(wh, 0)), length(field.element(wh, 1))};
 }
 
-int hexDigit(QChar c)
-{
-    if (c >= u'0' && c <= u'9') return c.unicode() - u'0';
-    if (c >= u'a' && c <= u'f') return c.unicode() - u'a' + 10;
-    if (c >= u'A' && c <= u'F') return c.unicode() - u'A' + 10;
-    return -1;
-}
-
-// Only #rrggbb and #rrggbbaa: QColor's own parser also takes names and #aarrggbb, which would make
-// "#rrggbbaa" from CSS or SVG silently mean something else.
-QColor color(const Field& field)
-{
-    const QString text = field.string();
-    const bool shapeOk = (text.size() == 7 || text.size() == 9) && text.startsWith(u'#');
-    int channels[4] = {0, 0, 0, 255};
-    for (qsizetype i = 1; shapeOk && i < text.size(); i += 2) {
-        const int high = hexDigit(text[i]);
-        const int low = hexDigit(text[i + 1]);
-        if (high < 0 || low < 0)
-            field.fail(u"must be \"#rrggbb\" or \"#rrggbbaa\" in hexadecimal, not %1"_s.arg(quoted(text)));
-        channels[i / 2] = high * 16 + low;
-    }
-    if (!shapeOk)
-        field.fail(u"must be \"#rrggbb\" or \"#rrggbbaa\", not %1"_s.arg(quoted(text)));
-    return QColor(channels[0], channels[1], channels[2], channels[3]);
-}
-
 QString expression(const Field& field)
 {
     const QString text = field.string();
@@ -234,71 +48,6 @@ QString expression(const Field& field)
     if (!error.empty())
         field.fail(QString::fromStdString(error));  // names the expression and what muparser found
     return text;
-}
-
-// ---- objects: a table per object says which keys exist, which are required, how each is read --
-
-template <typename Target>
-struct Key {
-    QString name;
-    bool required;
-    void (*read)(const Field&, Target&);
-};
-
-template <typename Target>
-bool hasKey(std::span<const Key<Target>> keys, const QString& name)
-{
-    return std::any_of(keys.begin(), keys.end(), [&name](const Key<Target>& key) { return key.name == name; });
-}
-
-template <typename Target>
-QString keyList(std::span<const Key<Target>> keys)
-{
-    QStringList names;
-    for (const Key<Target>& key : keys)
-        names << key.name;
-    return names.join(u", "_s);
-}
-
-// Keys are read in table order, absent optional keys keep the defaults of model/Scene.h.
-template <typename Target>
-void readObject(const Field& field, Target& target, std::span<const Key<Target>> keys)
-{
-    const QJsonObject object = field.object();
-    for (auto it = object.begin(); it != object.end(); ++it) {
-        if (!hasKey(keys, it.key()))
-            field.member(it.key()).fail(u"unknown key (expected one of: %1)"_s.arg(keyList(keys)));
-    }
-    for (const Key<Target>& key : keys) {
-        const Field child = field.member(key.name);
-        if (child.exists())
-            key.read(child, target);
-        else if (key.required)
-            child.fail(u"missing (required)"_s);
-    }
-}
-
-// For a key that was read before its table was chosen ("tool" picks the stroke's table).
-template <typename Target>
-void readAlready(const Field&, Target&) {}
-
-template <typename T, std::size_t N>
-T readAs(const Field& field, const Key<T> (&keys)[N])
-{
-    T value;
-    readObject(field, value, std::span<const Key<T>>(keys));
-    return value;
-}
-
-template <typename T, typename ReadItem>
-std::vector<T> readList(const Field& field, qsizetype minSize, qsizetype maxSize, ReadItem readItem)
-{
-    const QJsonArray array = field.array(minSize, maxSize);
-    std::vector<T> items;
-    items.reserve(static_cast<std::size_t>(array.size()));
-    for (qsizetype i = 0; i < array.size(); ++i)
-        items.push_back(readItem(field.element(array, i)));
-    return items;
 }
 
 // ---- canvas, flow, time, tracking -------------------------------------------------------------
@@ -493,30 +242,31 @@ const Key<Scene> sceneKeys[] = {
      }},
 };
 
-// Checks that span several keys, run after every key has been read on its own.
+// Checks that span several keys, run after every key has been read on its own. `root` is the path
+// of the scene object (the top level of a scene file).
 
-KeyPath itemPath(const QString& list, qsizetype i) { return KeyPath().key(list).index(i); }
+KeyPath itemPath(const KeyPath& root, const QString& list, qsizetype i) { return root.key(list).index(i); }
 
-void checkStrokesFitFlow(const Scene& scene)
+void checkStrokesFitFlow(const Scene& scene, const KeyPath& root)
 {
     if (scene.flow.type != FlowSpec::Type::Analytic)
         return;
     for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
         if (std::holds_alternative<StylusStroke>(scene.strokes[i]))
-            itemPath(u"strokes"_s, i).key(u"tool"_s).fail(
+            itemPath(root, u"strokes"_s, i).key(u"tool"_s).fail(
                 u"a stylus needs \"flow\": {\"type\": \"fluid\"}: an analytic flow is prescribed and does not react to it"_s);
     }
 }
 
 // Names become SVG ids and layer labels, so region and drop names share one namespace.
-void checkNamesUnique(const Scene& scene)
+void checkNamesUnique(const Scene& scene, const KeyPath& root)
 {
     QHash<QString, QString> owners;  // name -> where it was first used
-    auto claim = [&owners](const QString& name, const QString& list, qsizetype i) {
+    auto claim = [&owners, &root](const QString& name, const QString& list, qsizetype i) {
         if (name.isEmpty())
             return;
         if (const auto it = owners.constFind(name); it != owners.constEnd())
-            itemPath(list, i).key(u"name"_s).fail(u"the name %1 is already used by %2"_s.arg(quoted(name), it.value()));
+            itemPath(root, list, i).key(u"name"_s).fail(u"the name %1 is already used by %2"_s.arg(quoted(name), it.value()));
         owners.insert(name, u"%1[%2]"_s.arg(list).arg(i));
     };
     for (std::size_t i = 0; i < scene.regions.size(); ++i)
@@ -529,7 +279,7 @@ void checkNamesUnique(const Scene& scene)
 
 // The starting shapes (and the circles drops add) must fit the vertex budget; without this check a
 // tiny max_spacing would make the program try to allocate billions of vertices before any step.
-void checkVertexBudget(const Scene& scene)
+void checkVertexBudget(const Scene& scene, const KeyPath& root)
 {
     const double maxSpacing = scene.tracking.maxSpacing;
     const auto budget = static_cast<double>(scene.tracking.maxVertices);
@@ -541,35 +291,14 @@ void checkVertexBudget(const Scene& scene)
                           .arg(needed, 0, 'g', 3).arg(maxSpacing).arg(scene.tracking.maxVertices));
     };
     for (std::size_t i = 0; i < scene.regions.size(); ++i)
-        add(scene.regions[i].shape, itemPath(u"regions"_s, i).key(u"shape"_s));
+        add(scene.regions[i].shape, itemPath(root, u"regions"_s, i).key(u"shape"_s));
     for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
         if (const auto* drop = std::get_if<DropStroke>(&scene.strokes[i]))
-            add(CircleShape{drop->center, drop->radius}, itemPath(u"strokes"_s, i).key(u"radius"_s));
+            add(CircleShape{drop->center, drop->radius}, itemPath(root, u"strokes"_s, i).key(u"radius"_s));
     }
 }
 
-Scene readScene(const Field& root)
-{
-    Scene scene;
-    // The version first: a newer file should say so rather than complain about its new keys.
-    readVersion(root.member(u"vectorfluid"_s), scene);
-    readObject(root, scene, std::span<const Key<Scene>>(sceneKeys));
-    checkStrokesFitFlow(scene);
-    checkNamesUnique(scene);
-    checkVertexBudget(scene);
-    return scene;
-}
-
 // ---- bytes to JSON ----------------------------------------------------------------------------
-
-// "line:col" of a byte offset, both 1-based, the column counted in characters.
-QString location(const QByteArray& json, qsizetype offset)
-{
-    const QByteArray before = json.left(std::clamp<qsizetype>(offset, 0, json.size()));
-    const qsizetype lineStart = before.lastIndexOf('\n') + 1;
-    const qsizetype column = QString::fromUtf8(before.sliced(lineStart)).size() + 1;
-    return u"%1:%2"_s.arg(before.count('\n') + 1).arg(column);
-}
 
 QJsonDocument parseJson(const QByteArray& json)
 {
@@ -590,17 +319,19 @@ QJsonDocument parseJson(const QByteArray& json)
     return document;
 }
 
-// Messages may quote the file's own text (keys, expressions): keep the result on one line.
-QString oneLine(QString text)
-{
-    for (QChar& c : text) {
-        if (c.category() == QChar::Other_Control || c == QChar::LineSeparator || c == QChar::ParagraphSeparator)
-            c = u' ';
-    }
-    return text;
-}
-
 } // namespace
+
+Scene readSceneObject(const Field& root)
+{
+    Scene scene;
+    // The version first: a newer file should say so rather than complain about its new keys.
+    readVersion(root.member(u"vectorfluid"_s), scene);
+    readObject(root, scene, std::span<const Key<Scene>>(sceneKeys));
+    checkStrokesFitFlow(scene, root.path());
+    checkNamesUnique(scene, root.path());
+    checkVertexBudget(scene, root.path());
+    return scene;
+}
 
 SceneReadResult parseScene(const QByteArray& json, const QString& sourceName)
 {
@@ -609,7 +340,7 @@ SceneReadResult parseScene(const QByteArray& json, const QString& sourceName)
         const QJsonDocument document = parseJson(json);
         if (!document.isObject())
             throw ReadError{u"top level"_s, u"must be a JSON object {…}, not an array"_s};
-        result.scene = readScene(Field(document.object(), KeyPath()));
+        result.scene = readSceneObject(Field(document.object(), KeyPath()));
     } catch (const ReadError& error) {
         result.scene = Scene();
         result.error = oneLine(u"%1: %2: %3"_s.arg(sourceName, error.where, error.what));

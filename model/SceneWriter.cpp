@@ -3,6 +3,7 @@
 // gives back exactly the same numbers.
 #include "model/AtomicFile.h"
 #include "model/SceneFile.h"
+#include "model/SceneJson.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -12,14 +13,9 @@ namespace vf::model {
 namespace {
 
 using namespace Qt::StringLiterals;
+using json::colorText;
 
 QJsonArray pair(sim::Vec2 p) { return {p.x, p.y}; }
-
-QString colorText(const QColor& color)
-{
-    const QString rgb = color.name(QColor::HexRgb);
-    return color.alpha() == 255 ? rgb : rgb + u"%1"_s.arg(color.alpha(), 2, 16, QChar(u'0'));
-}
 
 template <typename T, typename ToJson>
 QJsonArray listJson(const std::vector<T>& items, ToJson toJson)
@@ -97,9 +93,9 @@ QJsonObject toJson(const RegionSpec& region)
 
 } // namespace
 
-QByteArray sceneToJson(const Scene& scene)
+QJsonObject sceneToJsonObject(const Scene& scene)
 {
-    const QJsonObject root{
+    return {
         {u"vectorfluid"_s, 1},
         {u"canvas"_s, QJsonObject{{u"width"_s, scene.canvas.width},
                                   {u"height"_s, scene.canvas.height},
@@ -114,7 +110,11 @@ QByteArray sceneToJson(const Scene& scene)
         {u"regions"_s, listJson(scene.regions, [](const RegionSpec& r) { return toJson(r); })},
         {u"strokes"_s, listJson(scene.strokes, [](const Stroke& s) { return toJson(s); })},
     };
-    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+QByteArray sceneToJson(const Scene& scene)
+{
+    return QJsonDocument(sceneToJsonObject(scene)).toJson(QJsonDocument::Indented);
 }
 
 QString writeSceneFile(const Scene& scene, const QString& path)

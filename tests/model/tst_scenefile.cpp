@@ -3,6 +3,8 @@
 #include "model/SceneFile.h"
 #include "sim/AnalyticFlow.h"
 
+#include "../TestFiles.h"
+
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -17,11 +19,6 @@
 
 #include <cmath>
 #include <numbers>
-
-#ifdef Q_OS_UNIX
-#include <csignal>
-#include <sys/resource.h>
-#endif
 
 using namespace vf;
 using namespace vf::model;
@@ -126,35 +123,6 @@ std::vector<double> edgeLengths(const sim::Polygon& polygon)
         lengths.push_back(glm::distance(polygon[i], polygon[(i + 1) % polygon.size()]));
     return lengths;
 }
-
-#ifdef Q_OS_UNIX
-// Makes every write past `bytes` fail with EFBIG (even for root, unlike file permissions) for the
-// lifetime of the object.
-class FileSizeLimit {
-public:
-    explicit FileSizeLimit(rlim_t bytes)
-    {
-        m_oldHandler = std::signal(SIGXFSZ, SIG_IGN);
-        getrlimit(RLIMIT_FSIZE, &m_old);
-        rlimit limit = m_old;
-        limit.rlim_cur = bytes;
-        m_active = setrlimit(RLIMIT_FSIZE, &limit) == 0;
-    }
-    ~FileSizeLimit()
-    {
-        setrlimit(RLIMIT_FSIZE, &m_old);
-        std::signal(SIGXFSZ, m_oldHandler);
-    }
-    FileSizeLimit(const FileSizeLimit&) = delete;
-    FileSizeLimit& operator=(const FileSizeLimit&) = delete;
-    bool active() const { return m_active; }
-
-private:
-    rlimit m_old{};
-    void (*m_oldHandler)(int) = nullptr;
-    bool m_active = false;
-};
-#endif
 
 } // namespace
 
@@ -320,7 +288,7 @@ private slots:
         const QByteArray previous = readBytes(path);
         QString error;
         {
-            const FileSizeLimit limit(64);
+            const test::FileSizeLimit limit(64);
             QVERIFY(limit.active());
             error = writeSceneFile(richScene(), path);
         }

@@ -1,0 +1,34 @@
+#pragma once
+// The layout of *.vfproj files that ProjectReader.cpp and ProjectWriter.cpp share
+// (docs/project-format.md), and the checks both apply to what is in them.
+#include "model/JsonFormat.h"
+#include "model/Project.h"
+
+#include <QByteArrayView>
+
+#include <cstdint>
+
+namespace vf::model::projectformat {
+
+// The first line: the magic word, a space, the version, a newline.
+inline constexpr QByteArrayView kMagic = "VFPROJ ";
+inline constexpr int kVersion = 1;
+inline constexpr qsizetype kMaxHeaderLine = 32;
+// After the header line: the manifest's length in bytes, unsigned 64-bit little-endian.
+inline constexpr qsizetype kLengthBytes = 8;
+
+// qCompress stores the uncompressed length in 32 bits.
+inline constexpr std::int64_t kMaxRawBlob = 0xffffffffLL;
+// The most that deflate can expand one compressed byte to (RFC 1951's best case is 1032:1): a
+// blob claiming more is corrupt, and the reader refuses it before allocating.
+inline constexpr std::int64_t kMaxInflation = 1032;
+inline constexpr std::int64_t kMaxHistory = 1'000'000;
+// Integers in JSON are doubles: this is the largest range they hold exactly.
+inline constexpr std::int64_t kMaxJsonInteger = std::int64_t(1) << 53;
+
+// Every region table of the project (now, and before and after each history entry): unique
+// non-empty names (they become SVG ids), and sim indices that name a region of the state the table
+// goes with. Throws json::ReadError at the table's key path.
+void checkRegionTables(const Project& project);
+
+} // namespace vf::model::projectformat

@@ -1,0 +1,147 @@
+// Writing *.vfproj files (docs/project-format.md). The states are encoded and compressed one at a
+// time, so only the compressed blobs are held together; the manifest needs their offsets and so
+// is written last in memory but first in the file.
+#include "model/AtomicFile.h"
+#include "model/ProjectFile.h"
+#include "model/ProjectFormat.h"
+#include "model/SceneJson.h"
+#include "model/StateBlob.h"
+
+#include <QJsonDocument>
+#include <QtEndian>
+
+#include <optional>
+#include <unordered_map>
+
+namespace vf::model {
+namespace {
+
+using namespace Qt::StringLiterals;
+using namespace projectformat;
+
+// Each distinct state once, numbered in order of first use; shared pointers to one state share
+// its number.
+class StateTable {
+public:
+    QJsonValue add(const sim::SimulationState* state)
+    {
+        if (!state)
+            return QJsonValue::Null;
+        const auto [it, added] = m_index.try_emplace(state, m_states.size());
+        if (added)
+            m_states.push_back(state);
+        return qint64(it->second);
+    }
+    const std::vector<const sim::SimulationState*>& states() const { return m_states; }
+
+private:
+    std::unordered_map<const sim::SimulationState*, std::size_t> m_index;
+    std::vector<const sim::SimulationState*> m_states;
+};
+
+QJsonArray tableJson(const RegionTable& table)
+{
+    QJsonArray array;
+    for (const RegionLook& look : table)
+        array.append(QJsonObject{{u"name"_s, look.name},
+                                 {u"color"_s, json::colorText(look.color)},
+                                 {u"visible"_s, look.visible},
+                                 {u"sim_index"_s, look.simIndex}});
+    return array;
+}
+
+struct EncodedProject {
+    QByteArray head;  // header line, manifest length, manifest
+    std::vector<QByteArray> blobs;
+    QString error;
+};
+
+EncodedProject encodeProject(const Project& project)
+{
+    EncodedProject encoded;
+    if (encoded.error = checkProject(project); !encoded.error.isEmpty())
+        return encoded;
+
+    StateTable table;
+    QJsonArray history;
+    for (const HistoryEntry& entry : project.history)
+        history.append(QJsonObject{{u"text"_s, entry.text},
+                                   {u"regions_before"_s, tableJson(entry.regionsBefore)},
+                                   {u"regions_after"_s, tableJson(entry.regionsAfter)},
+                                   {u"before"_s, table.add(entry.before.get())},
+                                   {u"after"_s, table.add(entry.after.get())}});
+
+    // The current state is usually the end of the last command: stored once if it is that state
+    // bit for bit (operator== would also take -0.0 for 0.0).
+    const QByteArray current = encodeState(project.state);
+    std::optional<qint64> currentIndex;
+    QJsonArray states;
+    qint64 offset = 0;
+    auto addBlob = [&](const QByteArray& raw) {
+        if (raw.size() > kMaxRawBlob) {
+            encoded.error = u"state %1 is %2 bytes, over the format's limit of %3"_s.arg(states.size()).arg(raw.size()).arg(kMaxRawBlob);
+            return;
+        }
+        // Stored, not deflated: a state's doubles shrink by about a fifth at ten times the cost of
+        // the whole save (docs/project-format.md, "Compression"). The zlib stream still carries
+        // its checksum, and readers take any level.
+        encoded.blobs.push_back(qCompress(raw, 0));
+        const qint64 length = encoded.blobs.back().size();
+        states.append(QJsonObject{{u"offset"_s, offset}, {u"length"_s, length}, {u"raw_length"_s, qint64(raw.size())}});
+        offset += length;
+    };
+    for (const sim::SimulationState* state : table.states()) {
+        const QByteArray raw = encodeState(*state);
+        if (!currentIndex && *state == project.state && raw == current)
+            currentIndex = qint64(states.size());
+        addBlob(raw);
+    }
+    if (!currentIndex) {
+        currentIndex = qint64(states.size());
+        addBlob(current);
+    }
+    if (!encoded.error.isEmpty())
+        return encoded;
+
+    const QJsonObject manifest{{u"scene"_s, sceneToJsonObject(project.scene)},
+                               {u"regions"_s, tableJson(project.regions)},
+                               {u"steps"_s, qint64(project.steps)},
+                               {u"state"_s, *currentIndex},
+                               {u"history"_s, history},
+                               {u"history_index"_s, project.historyIndex},
+                               {u"states"_s, states}};
+    const QByteArray json = QJsonDocument(manifest).toJson(QJsonDocument::Indented);
+    encoded.head = kMagic.toByteArray() + QByteArray::number(kVersion) + '\n';
+    const quint64 length = qToLittleEndian(quint64(json.size()));
+    encoded.head.append(reinterpret_cast<const char*>(&length), sizeof length);
+    encoded.head.append(json);
+    return encoded;
+}
+
+} // namespace
+
+QByteArray projectToBytes(const Project& project)
+{
+    const EncodedProject encoded = encodeProject(project);
+    if (!encoded.error.isEmpty())
+        return {};
+    QByteArray bytes = encoded.head;
+    for (const QByteArray& blob : encoded.blobs)
+        bytes.append(blob);
+    return bytes;
+}
+
+QString writeProjectFile(const Project& project, const QString& path)
+{
+    const EncodedProject encoded = encodeProject(project);
+    if (!encoded.error.isEmpty())
+        return json::oneLine(u"%1: cannot save: %2"_s.arg(path, encoded.error));
+    return saveAtomically(path, [&encoded](QIODevice& file) {
+        QString error = writeAll(file, encoded.head);
+        for (auto blob = encoded.blobs.begin(); error.isEmpty() && blob != encoded.blobs.end(); ++blob)
+            error = writeAll(file, *blob);
+        return error;
+    });
+}
+
+} // namespace vf::model
