@@ -21,11 +21,11 @@ struct HistoryEntry {
     QString text;  // as shown in the History dock
     RegionTable regionsBefore;
     RegionTable regionsAfter;
+    std::shared_ptr<const sim::SimulationState> before;
+    std::shared_ptr<const sim::SimulationState> after;
     // The flow and tracking settings at the start and end (they differ for a settings change).
     FlowSpec flowBefore, flowAfter;
     TrackingSpec trackingBefore, trackingAfter;
-    std::shared_ptr<const sim::SimulationState> before;
-    std::shared_ptr<const sim::SimulationState> after;
 };
 
 struct Project {

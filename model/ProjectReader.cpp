@@ -61,6 +61,10 @@ const Key<HistoryRef> historyKeys[] = {
     {u"text"_s, true, [](const Field& f, HistoryRef& h) { h.entry.text = f.string(); }},
     {u"regions_before"_s, true, [](const Field& f, HistoryRef& h) { h.entry.regionsBefore = regionTable(f); }},
     {u"regions_after"_s, true, [](const Field& f, HistoryRef& h) { h.entry.regionsAfter = regionTable(f); }},
+    {u"flow_before"_s, true, [](const Field& f, HistoryRef& h) { h.entry.flowBefore = readFlowObject(f); }},
+    {u"flow_after"_s, true, [](const Field& f, HistoryRef& h) { h.entry.flowAfter = readFlowObject(f); }},
+    {u"tracking_before"_s, true, [](const Field& f, HistoryRef& h) { h.entry.trackingBefore = readTrackingObject(f); }},
+    {u"tracking_after"_s, true, [](const Field& f, HistoryRef& h) { h.entry.trackingAfter = readTrackingObject(f); }},
     {u"before"_s, true, [](const Field& f, HistoryRef& h) { h.before = stateIndex(f); }},
     {u"after"_s, true, [](const Field& f, HistoryRef& h) { h.after = stateIndex(f); }},
 };

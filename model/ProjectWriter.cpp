@@ -68,6 +68,10 @@ EncodedProject encodeProject(const Project& project)
         history.append(QJsonObject{{u"text"_s, entry.text},
                                    {u"regions_before"_s, tableJson(entry.regionsBefore)},
                                    {u"regions_after"_s, tableJson(entry.regionsAfter)},
+                                   {u"flow_before"_s, flowToJson(entry.flowBefore)},
+                                   {u"flow_after"_s, flowToJson(entry.flowAfter)},
+                                   {u"tracking_before"_s, trackingToJson(entry.trackingBefore)},
+                                   {u"tracking_after"_s, trackingToJson(entry.trackingAfter)},
                                    {u"before"_s, table.add(entry.before.get())},
                                    {u"after"_s, table.add(entry.after.get())}});
 

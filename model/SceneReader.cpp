@@ -86,9 +86,11 @@ const Key<FlowSpec> analyticKeys[] = {
     {u"v"_s, true, [](const Field& f, FlowSpec& flow) { flow.v = expression(f); }},
 };
 
-void readFlow(const Field& field, Scene& scene)
+} // namespace
+
+FlowSpec readFlowObject(const Field& field)
 {
-    FlowSpec& flow = scene.flow;
+    FlowSpec flow;
     if (const Field type = field.member(u"type"_s); type.exists())
         readFlowType(type, flow);
     const bool fluid = flow.type == FlowSpec::Type::Fluid;
@@ -100,7 +102,10 @@ void readFlow(const Field& field, Scene& scene)
             field.member(key).fail(u"only allowed with \"type\": \"%1\""_s.arg(fluid ? u"analytic"_s : u"fluid"_s));
     }
     readObject(field, flow, keys);
+    return flow;
 }
+
+namespace {
 
 const Key<TimeSpec> timeKeys[] = {
     {u"dt"_s, false, [](const Field& f, TimeSpec& t) { t.dt = f.positive(kHuge); }},
@@ -114,6 +119,15 @@ const Key<TrackingSpec> trackingKeys[] = {
     {u"area_correction"_s, false, [](const Field& f, TrackingSpec& t) { t.areaCorrection = f.boolean(); }},
     {u"max_vertices"_s, false, [](const Field& f, TrackingSpec& t) { t.maxVertices = f.integer(3, limits::maxVertices); }},  // a contour has at least 3
 };
+
+} // namespace
+
+TrackingSpec readTrackingObject(const Field& field)
+{
+    return readAs(field, trackingKeys);
+}
+
+namespace {
 
 // ---- regions and their shapes -----------------------------------------------------------------
 
@@ -230,9 +244,9 @@ void readVersion(const Field& field, Scene&)
 const Key<Scene> sceneKeys[] = {
     {u"vectorfluid"_s, true, readVersion},
     {u"canvas"_s, false, [](const Field& f, Scene& s) { s.canvas = readAs(f, canvasKeys); }},
-    {u"flow"_s, false, readFlow},
+    {u"flow"_s, false, [](const Field& f, Scene& s) { s.flow = readFlowObject(f); }},
     {u"time"_s, false, [](const Field& f, Scene& s) { s.time = readAs(f, timeKeys); }},
-    {u"tracking"_s, false, [](const Field& f, Scene& s) { s.tracking = readAs(f, trackingKeys); }},
+    {u"tracking"_s, false, [](const Field& f, Scene& s) { s.tracking = readTrackingObject(f); }},
     {u"regions"_s, false, [](const Field& f, Scene& s) {
          s.regions = readList<RegionSpec>(f, 0, static_cast<qsizetype>(limits::maxRegions),
                                           [](const Field& item) { return readAs(item, regionKeys); });

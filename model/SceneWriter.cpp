@@ -26,7 +26,9 @@ QJsonArray listJson(const std::vector<T>& items, ToJson toJson)
     return array;
 }
 
-QJsonObject flowJson(const FlowSpec& flow)
+} // namespace
+
+QJsonObject flowToJson(const FlowSpec& flow)
 {
     if (flow.type == FlowSpec::Type::Analytic)
         return {{u"type"_s, u"analytic"_s}, {u"u"_s, flow.u}, {u"v"_s, flow.v}};
@@ -35,6 +37,17 @@ QJsonObject flowJson(const FlowSpec& flow)
             {u"viscosity"_s, flow.viscosity},
             {u"advection"_s, flow.maccormack ? u"maccormack"_s : u"semi-lagrangian"_s}};
 }
+
+QJsonObject trackingToJson(const TrackingSpec& tracking)
+{
+    return {{u"max_spacing"_s, tracking.maxSpacing},
+            {u"adaptive"_s, tracking.adaptive},
+            {u"proximity"_s, tracking.proximity},
+            {u"area_correction"_s, tracking.areaCorrection},
+            {u"max_vertices"_s, qint64(tracking.maxVertices)}};
+}
+
+namespace {
 
 QJsonObject toJson(const CircleShape& c)
 {
@@ -100,13 +113,9 @@ QJsonObject sceneToJsonObject(const Scene& scene)
         {u"canvas"_s, QJsonObject{{u"width"_s, scene.canvas.width},
                                   {u"height"_s, scene.canvas.height},
                                   {u"background"_s, colorText(scene.canvas.background)}}},
-        {u"flow"_s, flowJson(scene.flow)},
+        {u"flow"_s, flowToJson(scene.flow)},
         {u"time"_s, QJsonObject{{u"dt"_s, scene.time.dt}, {u"steps"_s, qint64(scene.time.steps)}}},
-        {u"tracking"_s, QJsonObject{{u"max_spacing"_s, scene.tracking.maxSpacing},
-                                    {u"adaptive"_s, scene.tracking.adaptive},
-                                    {u"proximity"_s, scene.tracking.proximity},
-                                    {u"area_correction"_s, scene.tracking.areaCorrection},
-                                    {u"max_vertices"_s, qint64(scene.tracking.maxVertices)}}},
+        {u"tracking"_s, trackingToJson(scene.tracking)},
         {u"regions"_s, listJson(scene.regions, [](const RegionSpec& r) { return toJson(r); })},
         {u"strokes"_s, listJson(scene.strokes, [](const Stroke& s) { return toJson(s); })},
     };

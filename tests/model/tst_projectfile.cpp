@@ -1,6 +1,7 @@
 // Project files: a written project reads back bit for bit with its states shared as they were, a
 // failed save keeps the old file, the writer refuses what the reader would refuse, and every kind
 // of broken file (made here by corrupting a good one) gives one line naming the problem.
+#include "model/EngineSettings.h"
 #include "model/ProjectFile.h"
 #include "model/StateBlob.h"
 
@@ -103,11 +104,15 @@ Project fluidProject()
     p.state = *s2;
     p.steps = 375;
     p.history = {
-        {u"Drop"_s, table({ink}), table({ink, sun}), s0, s1},
-        {u"Recolour “sün”"_s, table({ink, sun}), table({ink, sunRed}), nullptr, nullptr},
-        {u"Stroke"_s, table({ink, sunRed}), table({sun, ink}), s1, s2},
-        {u"Stroke"_s, table({sun, ink}), table({sun, ink}), s2, s3},
+        {u"Drop"_s, table({ink}), table({ink, sun}), s0, s1, {}, {}, {}, {}},
+        {u"Recolour “sün”"_s, table({ink, sun}), table({ink, sunRed}), nullptr, nullptr, {}, {}, {}, {}},
+        {u"Stroke"_s, table({ink, sunRed}), table({sun, ink}), s1, s2, {}, {}, {}, {}},
+        {u"Stroke"_s, table({sun, ink}), table({sun, ink}), s2, s3, {}, {}, {}, {}},
     };
+    // The last stroke came after a switch to shape design and a finer spacing.
+    p.history[3].flowBefore.viscosity = p.history[3].flowAfter.viscosity = shapeDesignViscosity;
+    p.history[3].trackingBefore.maxSpacing = p.history[3].trackingAfter.maxSpacing = 0.002;
+    p.history[2].flowAfter = p.history[3].flowBefore;
     p.historyIndex = 3;
     return p;
 }
@@ -165,6 +170,10 @@ void verifySameProject(const Project& read, const Project& written)
         QCOMPARE(r.text, w.text);
         QCOMPARE(r.regionsBefore, w.regionsBefore);
         QCOMPARE(r.regionsAfter, w.regionsAfter);
+        QCOMPARE(r.flowBefore, w.flowBefore);
+        QCOMPARE(r.flowAfter, w.flowAfter);
+        QCOMPARE(r.trackingBefore, w.trackingBefore);
+        QCOMPARE(r.trackingAfter, w.trackingAfter);
         for (const auto& [rs, ws] : {std::pair(r.before, w.before), std::pair(r.after, w.after)}) {
             QCOMPARE(bool(rs), bool(ws));
             QVERIFY(!rs || sameBits(*rs, *ws));
