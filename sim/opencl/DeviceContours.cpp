@@ -489,6 +489,9 @@ std::vector<Contour> DeviceContours::Impl::toContours(const Snapshot& s) const
         Contour& out = contours[c];
         out.region = s.regions[c];
         out.targetArea = s.targets[c];
+        out.positions.reserve(s.count[c]);
+        out.previous.reserve(s.count[c]);
+        out.spacing.reserve(s.count[c]);
         for (std::size_t i = s.offset[c]; i < s.offset[c] + s.count[c]; ++i) {
             const cl_float4& m = s.motion[i];
             out.positions.emplace_back(m.s[0], m.s[1]);
