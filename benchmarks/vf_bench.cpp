@@ -14,6 +14,8 @@
 // The scene: the default 64×64 fluid, stirred by a pen that circles the canvas centre at a steady
 // speed, first alone (so the flow is already moving) and then with a lattice of small ink circles
 // whose total vertex count is about N. Adaptive spacing and proximity are on (the defaults).
+#include "BenchScene.h"
+
 #include "sim/ContourTracker.h"
 #include "sim/FluidFlow.h"
 #include "sim/ProximityGrid.h"
@@ -45,6 +47,7 @@
 namespace {
 
 using namespace vf::sim;
+using namespace vf::bench;
 using Clock = std::chrono::steady_clock;
 
 // CPU time of this thread: what a phase costs, whatever else the (shared) machine runs meanwhile.
@@ -53,77 +56,6 @@ double threadSeconds()
     timespec ts{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-// ---- Backends: each one becomes a FullStep family -----------------------------------------------
-
-struct Backend {
-    const char* name;
-    std::unique_ptr<Simulation> (*make)(const SimulationSettings&);
-};
-
-const std::vector<Backend>& backends()
-{
-    static const std::vector<Backend> list{
-        {"reference", &makeReferenceSimulation},
-        // The device VF_OPENCL_DEVICE names, else the first GPU, else the first CPU (PoCL).
-        {"opencl", [](const SimulationSettings& s) -> std::unique_ptr<Simulation> {
-             return std::make_unique<opencl::OpenClSimulation>(s, std::nullopt);
-         }}};
-    return list;
-}
-
-// ---- The scene -----------------------------------------------------------------------------------
-
-constexpr double kDt = 1.0 / 60.0;  // one display frame per step, as an interactive session steps
-constexpr int kStirSteps = 30;      // fluid-only steps before the ink goes in (0.5 s of stirring)
-constexpr int kWarmupSteps = 3;     // with ink, untimed: refinement settles the fresh circles
-constexpr double kPenOrbit = 0.3;   // the pen circles (0.5, 0.5) at this distance...
-constexpr double kPenSpeed = 0.3;   // ...at this speed (canvas units / s)...
-constexpr double kPenRadius = 0.05; // ...with this reach
-// Circles of about this many vertices once refinement has settled them (measured, see
-// layoutFor): small enough to tile the canvas with N vertices, large enough that per-contour
-// overhead does not swamp per-vertex work.
-constexpr double kVerticesPerCircle = 128.0;
-// d_max relative to the circle radius. The adaptive spacing then settles each circle at about
-// kVerticesPerCircle vertices in this flow (curvature, vorticity and proximity all shrink d_i).
-constexpr double kSpacingOverRadius = 0.1;
-
-struct Layout {
-    int grid = 0;        // grid × grid circles
-    double radius = 0;   // of each circle
-    double maxSpacing = 0;
-};
-
-Layout layoutFor(std::int64_t targetVertices)
-{
-    Layout l;
-    l.grid = std::max(1, int(std::lround(std::sqrt(double(targetVertices) / kVerticesPerCircle))));
-    l.radius = 0.3 / l.grid;  // gaps of 0.4 / grid between neighbours: no proximity at the start
-    l.maxSpacing = kSpacingOverRadius * l.radius;
-    return l;
-}
-
-SimulationSettings settingsFor(const Layout& layout)
-{
-    SimulationSettings s;  // fluid flow, 64 × 64 cells, unit canvas, adaptive + proximity on
-    s.tracking.maxSpacing = layout.maxSpacing;
-    return s;
-}
-
-Vec2 penAt(int step)
-{
-    const double angle = step * kPenSpeed * kDt / kPenOrbit;
-    return Vec2(0.5) + kPenOrbit * Vec2(std::cos(angle), std::sin(angle));
-}
-
-std::vector<Vec2> circleCentres(const Layout& layout)
-{
-    std::vector<Vec2> centres;
-    for (int j = 0; j < layout.grid; ++j)
-        for (int i = 0; i < layout.grid; ++i)
-            centres.emplace_back((i + 0.5) / layout.grid, (j + 0.5) / layout.grid);
-    return centres;
 }
 
 // ---- Memory: peak resident set growth, from /proc/self (Linux) --------------------------------

@@ -18,6 +18,7 @@ public:
 
     void advance(double dt) override { m_time += dt; }
     double time() const override { return m_time; }
+    void setTime(double t) override { m_time = t; }
     Vec2 velocity(Vec2 p, double t) const override;
     double vorticity(Vec2 p, double t) const override;
 

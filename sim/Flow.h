@@ -12,6 +12,8 @@ public:
     // t in [time() - dt, time()], so contour advection (eq. 1) can sample inside the step.
     virtual void advance(double dt) = 0;
     virtual double time() const = 0;
+    // Sets the clock to t with no step in progress, as a restored snapshot continues.
+    virtual void setTime(double t) = 0;
 
     // Velocity in canvas units per second at canvas point p and time t.
     virtual Vec2 velocity(Vec2 p, double t) const = 0;

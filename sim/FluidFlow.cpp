@@ -37,6 +37,22 @@ void FluidFlow::advance(double dt)
     m_time += dt;
 }
 
+// Between steps only the solver's field is sampled (the span's end, see blend()): the fields of
+// the last step's start and middle matter no more and become the current one.
+void FluidFlow::setTime(double t)
+{
+    m_previous = m_middle = m_solver.velocity();
+    m_stepStart = m_time = t;
+}
+
+void FluidFlow::setState(const FluidState* state)
+{
+    m_solver.setVelocity(state ? state->velocity : FluidSolver::atRest(m_solver.settings()));
+    if (state)
+        m_solver.setPressure(state->pressure);
+    m_previous = m_middle = m_solver.velocity();
+}
+
 double FluidFlow::blend(double t) const
 {
     const double span = m_time - m_stepStart;

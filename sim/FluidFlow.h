@@ -3,6 +3,7 @@
 // time, so RK4's mid-step samples (eq. 1) see the flow of that moment rather than a frozen field.
 #include "sim/Flow.h"
 #include "sim/FluidSolver.h"
+#include "sim/SimulationState.h"
 
 namespace vf::sim {
 
@@ -15,6 +16,12 @@ public:
 
     void advance(double dt) override;
     double time() const override { return m_time; }
+    void setTime(double t) override;
+
+    // The fluid between two steps (snapshots). setState() takes a state on this grid, or null for
+    // the fluid at rest.
+    FluidState state() const { return {m_solver.velocity(), m_solver.pressure()}; }
+    void setState(const FluidState* state);
     Vec2 velocity(Vec2 p, double t) const override;
     double vorticity(Vec2 p, double t) const override;
 

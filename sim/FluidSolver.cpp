@@ -177,15 +177,16 @@ FluidSolver::FluidSolver(const FluidSettings& settings)
     : m_settings(settings)
 {
     validate(settings);
-    const int nx = settings.nx, ny = settings.ny;
-    m_velocity.nx = nx;
-    m_velocity.ny = ny;
-    m_velocity.hx = settings.width / nx;
-    m_velocity.hy = settings.height / ny;
-    m_velocity.u.assign(std::size_t(nx + 1) * ny, 0.0);
-    m_velocity.v.assign(std::size_t(nx) * (ny + 1), 0.0);
+    m_velocity = atRest(settings);
     m_advected = m_velocity;
-    m_pressure.assign(std::size_t(nx) * ny, 0.0);
+    m_pressure.assign(std::size_t(settings.nx) * settings.ny, 0.0);
+}
+
+MacVelocity FluidSolver::atRest(const FluidSettings& settings)
+{
+    const int nx = settings.nx, ny = settings.ny;
+    return {nx, ny, settings.width / nx, settings.height / ny, std::vector<double>(std::size_t(nx + 1) * ny, 0.0),
+            std::vector<double>(std::size_t(nx) * (ny + 1), 0.0)};
 }
 
 void FluidSolver::setVelocity(const MacVelocity& velocity)
@@ -200,6 +201,14 @@ void FluidSolver::setVelocity(const MacVelocity& velocity)
     // The warm-start pressure belongs to the old history; dropping it makes every later step a
     // function of this velocity alone (a restored snapshot replays bit for bit).
     std::fill(m_pressure.begin(), m_pressure.end(), 0.0);
+}
+
+void FluidSolver::setPressure(const std::vector<double>& pressure)
+{
+    if (pressure.size() != m_pressure.size())
+        throw std::invalid_argument("FluidSolver::setPressure: expected " + std::to_string(m_pressure.size())
+                                    + " cells");
+    m_pressure = pressure;
 }
 
 void FluidSolver::addStylus(Vec2 from, Vec2 to, double radius, double duration)

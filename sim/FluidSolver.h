@@ -50,8 +50,15 @@ public:
     // One step: advection, implicit viscosity, stylus forces, pressure projection.
     void step(double dt);
 
+    // The field at rest on the grid of `settings`.
+    static MacVelocity atRest(const FluidSettings& settings);
+
     const MacVelocity& velocity() const { return m_velocity; }
     void setVelocity(const MacVelocity& velocity);  // same dimensions; for snapshots and tests
+    // The last projection's pressure (nx * ny, cell centres), the next one's first guess. Restoring
+    // it after setVelocity() makes a snapshot step on exactly as the original did.
+    const std::vector<double>& pressure() const { return m_pressure; }
+    void setPressure(const std::vector<double>& pressure);  // same size
 
     double maxDivergence() const;   // max |div u| over cells, 1/s
     double kineticEnergy() const;   // 0.5 * integral of |u|^2 over the canvas

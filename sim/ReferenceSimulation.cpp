@@ -56,6 +56,32 @@ void ReferenceSimulation::stylus(Vec2 from, Vec2 to, double radius, double durat
         m_pendingStylus.push_back({from, to, radius, duration});
 }
 
+SimulationState ReferenceSimulation::snapshot() const
+{
+    SimulationState state;
+    state.time = time();
+    state.regionCount = m_regionCount;
+    state.contours = m_tracker.contours();
+    if (m_fluid)
+        state.fluid = m_fluid->state();
+    state.pendingStylus = m_pendingStylus;
+    return state;
+}
+
+void ReferenceSimulation::restore(const SimulationState& state)
+{
+    validateState(state, m_settings.tracking.maxVertices);
+    if (m_fluid) {
+        m_fluid->setState(fluidOnGrid(state, m_settings.fluid));
+        m_pendingStylus = state.pendingStylus;
+    } else {
+        m_pendingStylus.clear();
+    }
+    m_flow->setTime(state.time);
+    m_tracker.setContours(state.contours);
+    m_regionCount = state.regionCount;
+}
+
 StepReport ReferenceSimulation::step(double dt)
 {
     StepReport report;

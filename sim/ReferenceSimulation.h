@@ -24,6 +24,8 @@ public:
     std::size_t vertexCount() const override { return m_tracker.vertexCount(); }
     int regionCount() const override { return m_regionCount; }
     std::vector<Contour> contours() const override { return m_tracker.contours(); }
+    SimulationState snapshot() const override;
+    void restore(const SimulationState& state) override;
 
 protected:
     void growTargetAreasAround(Vec2 p, double area) override { m_tracker.growTargetAreasAround(p, area); }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace vf::sim {
 
@@ -16,7 +17,70 @@ void require(bool condition, const char* message)
         throw std::invalid_argument(message);
 }
 
+template <typename T, typename Predicate>
+bool all(const std::vector<T>& values, Predicate predicate)
+{
+    return std::all_of(values.begin(), values.end(), predicate);
+}
+
+bool finite(double x) { return std::isfinite(x); }
+bool finitePoint(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+bool positive(double x) { return std::isfinite(x) && x > 0.0; }
+
+void requireContour(const Contour& c, std::size_t index, int regionCount)
+{
+    const auto fail = [index](const std::string& what) {
+        throw std::invalid_argument("snapshot contour " + std::to_string(index) + " " + what);
+    };
+    const std::size_t n = c.positions.size();
+    if (n < 3)
+        fail("has " + std::to_string(n) + " vertices; a contour needs at least 3");
+    if (c.previous.size() != n || c.spacing.size() != n)
+        fail("has " + std::to_string(n) + " positions but " + std::to_string(c.previous.size()) +
+             " previous positions and " + std::to_string(c.spacing.size()) + " spacings");
+    if (c.region < 0 || c.region >= regionCount)
+        fail("belongs to region " + std::to_string(c.region) + ", outside [0, " + std::to_string(regionCount) + ")");
+    if (!all(c.positions, finitePoint) || !all(c.previous, finitePoint) || !std::isfinite(c.targetArea))
+        fail("holds a non-finite number");
+    if (!all(c.spacing, positive))
+        fail("has a spacing that is not a positive number");
+}
+
+void requireFluid(const FluidState& f)
+{
+    const MacVelocity& v = f.velocity;
+    require(v.nx >= 1 && v.ny >= 1, "snapshot fluid grid must have at least 1 x 1 cells");
+    const auto nx = std::size_t(v.nx), ny = std::size_t(v.ny);
+    require(v.u.size() == (nx + 1) * ny && v.v.size() == nx * (ny + 1) && f.pressure.size() == nx * ny,
+            "snapshot fluid arrays do not match its grid size");
+    require(positive(v.hx) && positive(v.hy), "snapshot fluid cell size must be a positive number");
+    require(all(v.u, finite) && all(v.v, finite) && all(f.pressure, finite), "snapshot fluid holds a non-finite number");
+}
+
 } // namespace
+
+void validateState(const SimulationState& state, std::size_t vertexLimit)
+{
+    require(std::isfinite(state.time), "snapshot time must be a finite number");
+    require(state.regionCount >= 0, "snapshot region count must not be negative");
+    std::size_t vertices = 0;
+    for (std::size_t i = 0; i < state.contours.size(); ++i) {
+        requireContour(state.contours[i], i, state.regionCount);
+        vertices += state.contours[i].positions.size();
+    }
+    if (vertices > vertexLimit)
+        throw std::invalid_argument("snapshot has " + std::to_string(vertices) + " vertices, more than the " +
+                                    std::to_string(vertexLimit) + " this simulation can hold");
+    if (state.fluid)
+        requireFluid(*state.fluid);
+}
+
+const FluidState* fluidOnGrid(const SimulationState& state, const FluidSettings& fluid)
+{
+    if (!state.fluid || state.fluid->velocity.nx != fluid.nx || state.fluid->velocity.ny != fluid.ny)
+        return nullptr;
+    return &*state.fluid;
+}
 
 // Shared by every backend so they refuse exactly the same settings.
 void validateSettings(const SimulationSettings& s)

@@ -3,6 +3,7 @@
 // double-precision C++) is always built; an OpenCL backend implements the same interface.
 #include "sim/FluidSolver.h"
 #include "sim/Geometry.h"
+#include "sim/SimulationState.h"
 #include "sim/Tracking.h"
 
 #include <memory>
@@ -60,6 +61,30 @@ public:
     // Every region's contours, indexed by region.
     std::vector<std::vector<Polygon>> regions() const;
 
+    // Snapshots, for the app's undo history, backend switching and project files.
+    //
+    // snapshot() takes everything that determines the steps to come: the time, the region count,
+    // every contour with all its fields, the fluid's velocity and pressure warm start (fluid flows
+    // only), and stylus input given but not yet stepped. Blocking on OpenCL (a readback).
+    //
+    // restore() replaces the whole live state with `state`. After b.restore(a.snapshot()) on the
+    // same backend and settings (OpenCL: the same device), b.snapshot() == a.snapshot() and both
+    // step on bit for bit alike. The OpenCL backend keeps positions in float32: a state taken from
+    // it restores exactly, one from the reference backend is rounded to float.
+    //
+    // The state may come from other settings, as when the app changes settings by building a new
+    // simulation and restoring the old state into it. Contours are taken as they are (the next
+    // step refines them to this simulation's spacing). When the state has no fluid (it came from
+    // an analytic flow) or one on a grid of another size, the fluid starts at rest; a fluid in the
+    // state of an analytic simulation is ignored, and so is its pending stylus input.
+    //
+    // A state that cannot be run is refused with std::invalid_argument (one line) before anything
+    // changes: a contour of fewer than 3 vertices, parallel arrays of unequal lengths, a non-finite
+    // number or a spacing that is not positive, a region outside [0, regionCount), regionCount < 0,
+    // a malformed fluid, or more vertices than tracking.maxVertices (OpenCL: than the device holds).
+    virtual SimulationState snapshot() const = 0;
+    virtual void restore(const SimulationState& state) = 0;
+
 protected:
     // The two backend parts of drop(): raise the area-correction target of every contour winding
     // around `p` by `area`, and move every contour by the drop's push, refining under it (false
@@ -70,6 +95,14 @@ protected:
 
 // Throws std::invalid_argument with a one-line message for settings no backend can run.
 void validateSettings(const SimulationSettings& settings);
+
+// Throws std::invalid_argument with a one-line message for a state restore() must refuse (see
+// Simulation::restore), `vertexLimit` being the most vertices the simulation can hold.
+void validateState(const SimulationState& state, std::size_t vertexLimit);
+
+// The state's fluid when it lies on a grid of the size `fluid` sets, else null: the fluid then
+// starts at rest.
+const FluidState* fluidOnGrid(const SimulationState& state, const FluidSettings& fluid);
 
 // How many substeps a step of the given strain (the largest relative motion of an edge's ends in
 // local spacings, ContourTracker::strainInSpacings) takes: enough to keep each under

@@ -489,6 +489,9 @@ std::vector<Contour> DeviceContours::Impl::toContours(const Snapshot& s) const
         Contour& out = contours[c];
         out.region = s.regions[c];
         out.targetArea = s.targets[c];
+        out.positions.reserve(s.count[c]);
+        out.previous.reserve(s.count[c]);
+        out.spacing.reserve(s.count[c]);
         for (std::size_t i = s.offset[c]; i < s.offset[c] + s.count[c]; ++i) {
             const cl_float4& m = s.motion[i];
             out.positions.emplace_back(m.s[0], m.s[1]);
@@ -590,6 +593,64 @@ bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
         push.radius = cl_float(radius);
         return m->move(flow, push);
     });
+}
+
+void DeviceContours::write(const std::vector<Contour>& contours)
+{
+    guarded([&] {
+        std::size_t total = 0;
+        for (const Contour& c : contours)
+            total += c.positions.size();
+        if (!m->reserve(std::max<std::size_t>(1, total)))
+            throw DeviceError("the OpenCL device cannot hold " + std::to_string(total) + " contour vertices");
+        m->reserveContours(contours.size());
+        std::vector<cl_float4> motion;
+        std::vector<float> spacing;
+        std::vector<cl_uint> contour, offset, count;
+        std::vector<int> regions;
+        std::vector<double> targets;
+        motion.reserve(total);
+        spacing.reserve(total);
+        contour.reserve(total);
+        for (const Contour& c : contours) {
+            offset.push_back(cl_uint(motion.size()));
+            count.push_back(cl_uint(c.positions.size()));
+            for (std::size_t i = 0; i < c.positions.size(); ++i) {
+                const Vec2 p = c.positions[i], q = c.previous[i];
+                motion.push_back({{cl_float(p.x), cl_float(p.y), cl_float(q.x), cl_float(q.y)}});
+                spacing.push_back(float(c.spacing[i]));
+                contour.push_back(cl_uint(offset.size() - 1));
+            }
+            regions.push_back(c.region);
+            targets.push_back(c.targetArea);
+        }
+        const std::vector<float> targetFloats(targets.begin(), targets.end());
+        cl::CommandQueue& q = m->queue;
+        const auto put = [&q](const cl::Buffer& buffer, const auto& values) {
+            if (!values.empty())
+                q.enqueueWriteBuffer(buffer, CL_FALSE, 0, values.size() * sizeof(values[0]), values.data());
+        };
+        put(m->front.motion, motion);
+        put(m->front.spacing, spacing);
+        put(m->front.contour, contour);
+        put(m->contourOffset, offset);
+        put(m->contourCount, count);
+        if (m->fp64)
+            put(m->contourTarget, targets);
+        else
+            put(m->contourTarget, targetFloats);
+        q.finish();  // the host vectors above go out of scope
+        m->regions = std::move(regions);
+        m->targets = std::move(targets);
+        m->vertices = total;
+        for (Snapshot& staged : m->staging)
+            staged.taken = true;
+    });
+}
+
+std::size_t DeviceContours::vertexLimit() const
+{
+    return std::min(m->settings.maxVertices, m->deviceLimit());
 }
 
 std::size_t DeviceContours::vertexCount() const

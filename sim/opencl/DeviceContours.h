@@ -45,6 +45,15 @@ public:
     // Reads the geometry back (blocking). Positions widen to double; spacing as used last step.
     std::vector<Contour> read() const;
 
+    // Replaces every contour with `contours` (snapshot restore), laid out one after the other in
+    // order, as steps leave them, so the steps after it match those after the snapshot bit for bit.
+    // The caller validates them (Simulation::restore); at most vertexLimit() vertices. Readbacks
+    // requested before are dropped. Throws DeviceError.
+    void write(const std::vector<Contour>& contours);
+    // The most vertices this tracker can hold: max_vertices, or fewer where the device's memory
+    // holds fewer.
+    std::size_t vertexLimit() const;
+
     // The app's readback, asynchronous and double-buffered: requestRead() enqueues non-blocking
     // copies of the geometry as it is now into one of two host staging buffers and returns at
     // once (steps may be enqueued right behind it); takeRead() returns the newest requested

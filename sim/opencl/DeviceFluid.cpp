@@ -237,6 +237,10 @@ public:
     void setStencil(const Stencil5& stencil);
     void solve(int maxIterations);
     void clearSolution();
+    // The solution as mx * my unknowns in row-major order, without the ghost ring (which stays
+    // zero): the first guess of the next solve, for snapshots.
+    std::vector<double> readSolution() const;
+    void writeSolution(const std::vector<double>& unknowns);
 
     const cl::Buffer& x() const { return m_x; }
     const cl::Buffer& b() const { return m_b; }
@@ -474,6 +478,29 @@ void DevicePcg::clearSolution()
 {
     const std::size_t bytes = std::size_t(m_levels[0].stored()) * sizeof(cl_float);
     m_queue.enqueueFillBuffer(m_x, cl_float(0), 0, bytes);
+}
+
+std::vector<double> DevicePcg::readSolution() const
+{
+    const LevelShape& l = m_levels[0];
+    std::vector<float> stored(l.stored());
+    m_queue.enqueueReadBuffer(m_x, CL_TRUE, 0, stored.size() * sizeof(cl_float), stored.data());
+    std::vector<double> unknowns;
+    unknowns.reserve(std::size_t(l.mx) * l.my);
+    for (int j = 0; j < l.my; ++j)
+        for (int i = 0; i < l.mx; ++i)
+            unknowns.push_back(stored[std::size_t(j + 1) * (l.mx + 2) + i + 1]);
+    return unknowns;
+}
+
+void DevicePcg::writeSolution(const std::vector<double>& unknowns)
+{
+    const LevelShape& l = m_levels[0];
+    std::vector<float> stored(l.stored(), 0.0f);
+    for (int j = 0; j < l.my; ++j)
+        for (int i = 0; i < l.mx; ++i)
+            stored[std::size_t(j + 1) * (l.mx + 2) + i + 1] = float(unknowns[std::size_t(j) * l.mx + i]);
+    m_queue.enqueueWriteBuffer(m_x, CL_TRUE, 0, stored.size() * sizeof(cl_float), stored.data());
 }
 
 // ---- The fluid ---------------------------------------------------------------------------------
@@ -756,6 +783,19 @@ void DeviceFluid::writeVelocity(const MacVelocity& velocity)
         // it makes every later step a function of this velocity alone.
         m->pressure.clearSolution();
     });
+}
+
+std::vector<double> DeviceFluid::readPressure() const
+{
+    return translatingErrors(m->device, [&] { return m->pressure.readSolution(); });
+}
+
+void DeviceFluid::writePressure(const std::vector<double>& pressure)
+{
+    if (pressure.size() != std::size_t(m->nx) * m->ny)
+        throw std::invalid_argument("DeviceFluid::writePressure: expected " + std::to_string(m->nx) + " x "
+                                    + std::to_string(m->ny) + " cells");
+    translatingErrors(m->device, [&] { m->pressure.writeSolution(pressure); });
 }
 
 // Measured as FluidSolver::maxDivergence measures it, in double, on the float32 field read back.

@@ -6,6 +6,7 @@
 #include "sim/opencl/FlowBinding.h"
 
 #include <memory>
+#include <vector>
 
 namespace vf::sim::opencl {
 
@@ -32,7 +33,10 @@ public:
 
     // Blocking readbacks, for tests and snapshots: never on the per-step path.
     MacVelocity readVelocity() const;
-    void writeVelocity(const MacVelocity& velocity);
+    void writeVelocity(const MacVelocity& velocity);  // clears the pressure warm start
+    // The pressure warm start, as FluidSolver::pressure(): write it after writeVelocity().
+    std::vector<double> readPressure() const;
+    void writePressure(const std::vector<double>& pressure);
     double maxDivergence() const;
 
 private:

@@ -90,6 +90,35 @@ StepReport OpenClSimulation::step(double dt)
     return report;
 }
 
+SimulationState OpenClSimulation::snapshot() const
+{
+    SimulationState state;
+    state.time = m_time;
+    state.regionCount = m_regionCount;
+    state.contours = m_contours->read();
+    if (m_fluid)
+        state.fluid = FluidState{m_fluid->readVelocity(), m_fluid->readPressure()};
+    state.pendingStylus = m_pendingStylus;
+    return state;
+}
+
+void OpenClSimulation::restore(const SimulationState& state)
+{
+    validateState(state, m_contours->vertexLimit());
+    m_contours->write(state.contours);
+    if (m_fluid) {
+        const FluidState* fluid = fluidOnGrid(state, m_settings.fluid);
+        m_fluid->writeVelocity(fluid ? fluid->velocity : FluidSolver::atRest(m_settings.fluid));
+        if (fluid)
+            m_fluid->writePressure(fluid->pressure);
+        m_pendingStylus = state.pendingStylus;
+    } else {
+        m_pendingStylus.clear();
+    }
+    m_regionCount = state.regionCount;
+    m_time = state.time;
+}
+
 std::unique_ptr<Simulation> makeSimulation(const SimulationSettings& settings, const std::string& backend,
                                            std::optional<int> deviceIndex)
 {

@@ -29,6 +29,8 @@ public:
     std::size_t vertexCount() const override { return m_contours->vertexCount(); }
     int regionCount() const override { return m_regionCount; }
     std::vector<Contour> contours() const override { return m_contours->read(); }
+    SimulationState snapshot() const override;
+    void restore(const SimulationState& state) override;
 
 protected:
     void growTargetAreasAround(Vec2 p, double area) override { m_contours->growTargetAreasAround(p, area); }
