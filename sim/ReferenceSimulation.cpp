@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace vf::sim {
 
@@ -70,7 +71,7 @@ SimulationState ReferenceSimulation::snapshot() const
 
 void ReferenceSimulation::restore(const SimulationState& state)
 {
-    validateState(state, m_settings.tracking.maxVertices);
+    validateState(state, std::numeric_limits<std::size_t>::max());  // host memory is the limit
     if (m_fluid) {
         m_fluid->setState(fluidOnGrid(state, m_settings.fluid));
         m_pendingStylus = state.pendingStylus;

@@ -81,7 +81,9 @@ public:
     // A state that cannot be run is refused with std::invalid_argument (one line) before anything
     // changes: a contour of fewer than 3 vertices, parallel arrays of unequal lengths, a non-finite
     // number or a spacing that is not positive, a region outside [0, regionCount), regionCount < 0,
-    // a malformed fluid, or more vertices than tracking.maxVertices (OpenCL: than the device holds).
+    // a malformed fluid, or (OpenCL) more vertices than the device holds. tracking.maxVertices is
+    // not applied: it stops growth, and a state to restore may have gone past it with the drop
+    // or region that reached it (the app's undo history holds such states).
     virtual SimulationState snapshot() const = 0;
     virtual void restore(const SimulationState& state) = 0;
 

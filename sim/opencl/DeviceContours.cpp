@@ -648,9 +648,9 @@ void DeviceContours::write(const std::vector<Contour>& contours)
     });
 }
 
-std::size_t DeviceContours::vertexLimit() const
+std::size_t DeviceContours::deviceVertexLimit() const
 {
-    return std::min(m->settings.maxVertices, m->deviceLimit());
+    return m->deviceLimit();
 }
 
 std::size_t DeviceContours::vertexCount() const

@@ -47,12 +47,12 @@ public:
 
     // Replaces every contour with `contours` (snapshot restore), laid out one after the other in
     // order, as steps leave them, so the steps after it match those after the snapshot bit for bit.
-    // The caller validates them (Simulation::restore); at most vertexLimit() vertices. Readbacks
-    // requested before are dropped. Throws DeviceError.
+    // The caller validates them (Simulation::restore); at most deviceVertexLimit() vertices.
+    // Readbacks requested before are dropped. Throws DeviceError.
     void write(const std::vector<Contour>& contours);
-    // The most vertices this tracker can hold: max_vertices, or fewer where the device's memory
-    // holds fewer.
-    std::size_t vertexLimit() const;
+    // The most vertices the device's memory holds (max_vertices aside: a state to restore may
+    // have reached past it with its last drop).
+    std::size_t deviceVertexLimit() const;
 
     // The app's readback, asynchronous and double-buffered: requestRead() enqueues non-blocking
     // copies of the geometry as it is now into one of two host staging buffers and returns at
