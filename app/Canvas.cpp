@@ -86,19 +86,19 @@ void Canvas::setFrame(std::shared_ptr<const model::Frame> frame)
     m_frame = std::move(frame);
     if (m_fitting && (first || canvasSize() != before))
         fitToWindow();
-    update();
+    invalidateInk();
 }
 
 void Canvas::setRegions(model::RegionTable regions)
 {
     m_regions = std::move(regions);
-    update();
+    invalidateInk();
 }
 
 void Canvas::setBackground(QColor color)
 {
     m_background = color;
-    update();
+    invalidateInk();
 }
 
 QSizeF Canvas::canvasSize() const
@@ -126,7 +126,7 @@ void Canvas::setView(double scale, QPointF offset)
     const bool zoomed = scale != m_scale;
     m_scale = scale;
     m_offset = offset;
-    update();
+    invalidateInk();
     if (zoomed)
         emit zoomChanged(m_scale);
 }
@@ -211,57 +211,101 @@ bool Canvas::handleGesture(QGestureEvent* event)
 
 void Canvas::paintEvent(QPaintEvent*)
 {
+    const double dpr = devicePixelRatioF();
+    const QSize deviceSize = (QSizeF(size()) * dpr).toSize();
+    if (!m_inkValid || m_ink.size() != deviceSize || m_ink.devicePixelRatio() != dpr)
+        paintInk(deviceSize, dpr);
     QPainter painter(this);
-    painter.fillRect(rect(), palette().color(QPalette::Mid));
-    if (m_frame) {
-        const QRectF page(mapFromCanvas({0.0, 0.0}), mapFromCanvas({m_frame->width, m_frame->height}));
-        painter.fillRect(page, m_background);
-        painter.setClipRect(page);  // as exported: nothing outside the canvas
-
-        // Everything below in device pixels, the unit of the level of detail.
-        const double dpr = devicePixelRatioF();
-        const PixelMapping toDevice{m_scale * dpr, m_offset.x() * dpr, m_offset.y() * dpr};
-        // One pixel more on each side: antialiasing reaches half a pixel out.
-        const QRectF visible = QRectF(0, 0, width() * dpr, height() * dpr).adjusted(-1, -1, 1, 1);
-        m_paths.setView(m_frame, toDevice, visible);
-        painter.setTransform(QTransform::fromScale(1.0 / dpr, 1.0 / dpr));
-        painter.setRenderHint(QPainter::Antialiasing);
-        painter.setPen(Qt::NoPen);
-
-        const auto shown = [&](const model::RegionLook& look) {
-            return look.visible && look.simIndex >= 0 && std::size_t(look.simIndex) < m_frame->regions.size();
-        };
-        for (const model::RegionLook& look : m_regions)
-            if (shown(look))
-                painter.fillPath(m_paths.region(std::size_t(look.simIndex)), look.color);
-
-        if (m_showGrid && m_frame->velocity)
-            paintGrid(painter, *m_frame->velocity, toDevice, visible, dpr);
-        if (m_showVelocity && m_frame->velocity)
-            paintVelocity(painter, *m_frame->velocity, toDevice, visible, dpr);
-        if (m_showVertices) {
-            std::vector<const QPolygonF*> dots;
-            std::size_t count = 0;
-            for (const model::RegionLook& look : m_regions) {
-                if (!shown(look))
-                    continue;
-                const std::optional<QPolygonF>& region = m_paths.vertices(std::size_t(look.simIndex), kMaxVertexDots);
-                count += region ? std::size_t(region->size()) : kMaxVertexDots + 1;
-                dots.push_back(region ? &*region : nullptr);
-            }
-            if (count <= kMaxVertexDots)
-                for (const QPolygonF* region : dots)
-                    paintVertexDots(painter, *region, dpr);
-        }
-        if (m_drag == Drag::Drop && m_dropPreview > 0.0) {
-            painter.resetTransform();
-            QPen pen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine);
-            painter.setPen(pen);
-            painter.setBrush(Qt::NoBrush);
-            painter.drawEllipse(mapFromCanvas(m_dropCenter), m_dropPreview * m_scale, m_dropPreview * m_scale);
-        }
-    }
+    painter.drawImage(QPointF(0, 0), m_ink);
+    if (m_frame)
+        paintOverlays(painter, dpr);
     countPaintedFrame();
+}
+
+void Canvas::invalidateInk()
+{
+    m_inkValid = false;
+    update();
+}
+
+void Canvas::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::PaletteChange)
+        invalidateInk();  // the surround's colour
+    QWidget::changeEvent(event);
+}
+
+PixelMapping Canvas::toDevice(double dpr) const
+{
+    return {m_scale * dpr, m_offset.x() * dpr, m_offset.y() * dpr};
+}
+
+void Canvas::paintInk(QSize deviceSize, double dpr)
+{
+    if (m_ink.size() != deviceSize)
+        m_ink = QImage(deviceSize, QImage::Format_RGB32);  // opaque: blitted as a plain copy
+    m_ink.setDevicePixelRatio(dpr);
+    m_inkValid = true;
+    QPainter painter(&m_ink);
+    painter.fillRect(rect(), palette().color(QPalette::Mid));
+    if (!m_frame)
+        return;
+    const QRectF page(mapFromCanvas({0.0, 0.0}), mapFromCanvas({m_frame->width, m_frame->height}));
+    painter.fillRect(page, m_background);
+    painter.setClipRect(page);  // as exported: nothing outside the canvas
+
+    // From here on in device pixels, the unit of the level of detail.
+    m_paths.setView(m_frame, toDevice(dpr), visibleDeviceRect(dpr));
+    painter.setTransform(QTransform::fromScale(1.0 / dpr, 1.0 / dpr));
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(Qt::NoPen);
+    for (const model::RegionLook& look : m_regions)
+        if (isShown(look))
+            painter.fillPath(m_paths.region(std::size_t(look.simIndex)), look.color);
+}
+
+QRectF Canvas::visibleDeviceRect(double dpr) const
+{
+    // One pixel more on each side: antialiasing reaches half a pixel out.
+    return QRectF(0, 0, width() * dpr, height() * dpr).adjusted(-1, -1, 1, 1);
+}
+
+bool Canvas::isShown(const model::RegionLook& look) const
+{
+    return look.visible && look.simIndex >= 0 && std::size_t(look.simIndex) < m_frame->regions.size();
+}
+
+void Canvas::paintOverlays(QPainter& painter, double dpr)
+{
+    const PixelMapping mapping = toDevice(dpr);
+    const QRectF visible = visibleDeviceRect(dpr);
+    m_paths.setView(m_frame, mapping, visible);
+    painter.setTransform(QTransform::fromScale(1.0 / dpr, 1.0 / dpr));
+    painter.setRenderHint(QPainter::Antialiasing);
+    if (m_showGrid && m_frame->velocity)
+        paintGrid(painter, *m_frame->velocity, mapping, visible, dpr);
+    if (m_showVelocity && m_frame->velocity)
+        paintVelocity(painter, *m_frame->velocity, mapping, visible, dpr);
+    if (m_showVertices) {
+        std::vector<const QPolygonF*> dots;
+        std::size_t count = 0;
+        for (const model::RegionLook& look : m_regions) {
+            if (!isShown(look))
+                continue;
+            const std::optional<QPolygonF>& region = m_paths.vertices(std::size_t(look.simIndex), kMaxVertexDots);
+            count += region ? std::size_t(region->size()) : kMaxVertexDots + 1;
+            dots.push_back(region ? &*region : nullptr);
+        }
+        if (count <= kMaxVertexDots)
+            for (const QPolygonF* region : dots)
+                paintVertexDots(painter, *region, dpr);
+    }
+    if (m_drag == Drag::Drop && m_dropPreview > 0.0) {
+        painter.resetTransform();
+        painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(mapFromCanvas(m_dropCenter), m_dropPreview * m_scale, m_dropPreview * m_scale);
+    }
 }
 
 void Canvas::setShowVertices(bool show)

@@ -8,6 +8,7 @@
 
 #include <QColor>
 #include <QElapsedTimer>
+#include <QImage>
 #include <QPointF>
 #include <QTimer>
 #include <QWidget>
@@ -16,6 +17,7 @@
 #include <memory>
 
 class QGestureEvent;
+class QPainter;
 class QNativeGestureEvent;
 
 namespace vf::app {
@@ -71,6 +73,7 @@ signals:
 protected:
     bool event(QEvent* event) override;
     void paintEvent(QPaintEvent* event) override;
+    void changeEvent(QEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
@@ -83,6 +86,12 @@ private:
     enum class Drag { None, Pan, Drop, Stroke };
 
     QSizeF canvasSize() const;
+    PixelMapping toDevice(double dpr) const;
+    QRectF visibleDeviceRect(double dpr) const;
+    bool isShown(const model::RegionLook& look) const;
+    void invalidateInk();
+    void paintInk(QSize deviceSize, double dpr);
+    void paintOverlays(QPainter& painter, double dpr);
     void zoomAbout(QPointF widgetPos, double factor);
     void setView(double scale, QPointF offset);
     void updateCursor();
@@ -94,6 +103,10 @@ private:
     model::RegionTable m_regions;
     QColor m_background = Qt::white;
     RegionPaths m_paths;
+    // The regions as last painted, device pixels: a repaint that changes none of what they depend
+    // on (an overlay, the drop preview, an expose) only copies it.
+    QImage m_ink;
+    bool m_inkValid = false;
 
     // The view: widget position = canvas position · m_scale + m_offset (logical pixels).
     double m_scale = 1.0;

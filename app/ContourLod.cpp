@@ -87,20 +87,17 @@ void decimateContour(const sim::Polygon& contour, const PixelMapping& toDevice, 
         || low.y() > visible.bottom())
         return;
 
-    // Walk once round from the leftmost vertex; k == n is that vertex again, closing the contour.
+    // Walk once round from the leftmost vertex; step n is that vertex again, closing the contour.
     const std::size_t start = extremes[0];
-    const auto at = [&](std::size_t k) { return toDevice.map(contour[(start + k) % n]); };
-    const auto forced = [&](std::size_t k) {
-        const std::size_t i = (start + k) % n;
-        return i == extremes[1] || i == extremes[2] || i == extremes[3];
-    };
-
     Cone cone(tolerance);
-    QPointF anchor = at(0);
+    QPointF anchor = toDevice.map(contour[start]);
     QPointF previous = anchor;
     out.append(anchor);
-    for (std::size_t k = 1; k <= n; ++k) {
-        const QPointF p = at(k);
+    std::size_t i = start;
+    for (std::size_t step = 1; step <= n; ++step) {
+        if (++i == n)
+            i = 0;
+        const QPointF p = toDevice.map(contour[i]);
         QPointF offset = p - anchor;
         double distance = std::sqrt(dot(offset, offset));
         if (!cone.admits(offset, distance)) {
@@ -111,9 +108,9 @@ void decimateContour(const sim::Polygon& contour, const PixelMapping& toDevice, 
             offset = p - anchor;
             distance = std::sqrt(dot(offset, offset));
         }
-        if (k == n)
+        if (step == n)
             break;
-        if (forced(k)) {
+        if (i == extremes[1] || i == extremes[2] || i == extremes[3]) {
             anchor = p;
             out.append(anchor);
             cone.reset();
