@@ -1,0 +1,137 @@
+#pragma once
+// The canvas widget: draws the newest frame of the simulation with the document's region looks,
+// lets the user zoom and pan, and turns pointer input into tool requests in canvas units (origin
+// top-left, y down). It never touches the simulation: the main window connects its signals.
+#include "app/RegionPaths.h"
+#include "model/Frame.h"
+#include "model/Regions.h"
+
+#include <QColor>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QPointF>
+#include <QTimer>
+#include <QWidget>
+
+#include <deque>
+#include <memory>
+
+class QGestureEvent;
+class QPainter;
+class QNativeGestureEvent;
+
+namespace vf::app {
+
+enum class Tool { Drop, Stylus, Text, Pan };
+
+class Canvas : public QWidget {
+    Q_OBJECT
+    // The radius of a drop placed by a click (no drag), as a fraction of the canvas width.
+    Q_PROPERTY(double clickDropRadius READ clickDropRadius WRITE setClickDropRadius)
+
+public:
+    explicit Canvas(QWidget* parent = nullptr);
+
+    void setFrame(std::shared_ptr<const model::Frame> frame);
+    void setRegions(model::RegionTable regions);
+    void setBackground(QColor color);
+    void setTool(Tool tool);
+    Tool tool() const { return m_tool; }
+
+    double clickDropRadius() const { return m_clickDropRadius; }
+    void setClickDropRadius(double fractionOfWidth) { m_clickDropRadius = fractionOfWidth; }
+
+    // Widget (logical pixel) position ↔ canvas units.
+    QPointF mapToCanvas(QPointF widgetPos) const;
+    QPointF mapFromCanvas(QPointF canvasPos) const;
+    double zoom() const { return m_scale; }  // logical pixels per canvas unit
+
+    // Frames painted over the last second.
+    int displayFps() const;
+
+    QSize sizeHint() const override { return {800, 600}; }
+
+public slots:
+    void zoomIn();
+    void zoomOut();
+    void fitToWindow();  // and keep fitting on resize until the user zooms or pans
+    void actualSize();   // the canvas at the size of its exported page (render::ExportOptions)
+    void setShowVertices(bool show);
+    void setShowVelocity(bool show);
+    void setShowGrid(bool show);
+
+signals:
+    void dropRequested(QPointF center, double radius);
+    void strokeStarted(QPointF at);
+    // `seconds`: between the two pointer events, so distance / seconds is the pen's speed.
+    void strokeMoved(QPointF from, QPointF to, double seconds);
+    void strokeFinished();
+    void textRequested(QPointF baselineStart);
+    void displayFpsChanged(int fps);
+    void zoomChanged(double zoom);
+
+protected:
+    bool event(QEvent* event) override;
+    void paintEvent(QPaintEvent* event) override;
+    void changeEvent(QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+
+private:
+    enum class Drag { None, Pan, Drop, Stroke };
+
+    QSizeF canvasSize() const;
+    PixelMapping toDevice(double dpr) const;
+    QRectF visibleDeviceRect(double dpr) const;
+    bool isShown(const model::RegionLook& look) const;
+    void invalidateInk();
+    void paintInk(QSize deviceSize, double dpr);
+    void paintOverlays(QPainter& painter, double dpr);
+    void zoomAbout(QPointF widgetPos, double factor);
+    void setView(double scale, QPointF offset);
+    void updateCursor();
+    void countPaintedFrame();
+    void publishFps();
+    bool handleGesture(QGestureEvent* event);
+
+    std::shared_ptr<const model::Frame> m_frame;
+    model::RegionTable m_regions;
+    QColor m_background = Qt::white;
+    RegionPaths m_paths;
+    // The regions as last painted, device pixels: a repaint that changes none of what they depend
+    // on (an overlay, the drop preview, an expose) only copies it.
+    QImage m_ink;
+    bool m_inkValid = false;
+
+    // The view: widget position = canvas position · m_scale + m_offset (logical pixels).
+    double m_scale = 1.0;
+    QPointF m_offset;
+    bool m_fitting = true;  // fit again on resize and when the canvas size changes
+
+    bool m_showVertices = false;
+    bool m_showVelocity = false;
+    bool m_showGrid = false;
+
+    Tool m_tool = Tool::Drop;
+    double m_clickDropRadius = 0.05;
+    bool m_spaceHeld = false;
+    Drag m_drag = Drag::None;
+    QPointF m_pressPos;      // widget pixels
+    QPointF m_lastPos;       // widget pixels: the pan's last point
+    QPointF m_strokeLast;    // canvas units: where the stroke's last segment ended...
+    qint64 m_lastTime = 0;   // ...and when (ms, the pointer event's timestamp)
+    QPointF m_dropCenter;    // canvas units
+    double m_dropPreview = 0.0;  // canvas units; 0 while the press has not become a drag
+
+    std::deque<qint64> m_paintTimes;  // ms on m_clock, the last second's
+    QElapsedTimer m_clock;
+    QTimer m_fpsTimer;
+    int m_publishedFps = 0;
+};
+
+} // namespace vf::app
