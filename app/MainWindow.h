@@ -4,6 +4,7 @@
 #include "app/Canvas.h"
 #include "app/SimulationController.h"
 #include "model/Document.h"
+#include "model/Drawing.h"
 #include "model/RegionListModel.h"
 
 #include <QLabel>

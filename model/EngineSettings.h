@@ -8,11 +8,13 @@
 namespace vf::model {
 
 // The two fluid modes of the paper: marbling (§5.1, low viscosity, motion persists) and shape
-// design (§5.2, high viscosity, motion dies right after each stroke). The viscosities are the
-// demo scenes' (sumi-nagashi and logo-design).
+// design (§5.2, high viscosity, motion dies right after each stroke). Marbling is the
+// sumi-nagashi demo's. For shape design, the slowest mode of a unit canvas (k² = 2π²) decays at
+// ν·2π² per second: at ν = 1 that is e^-4 within 0.2 s, so the ink stops once the pen does (the
+// stylus force acts after the diffusion, so the stroke itself still carries the ink).
 enum class FluidMode { Marbling, ShapeDesign };
 inline constexpr double marblingViscosity = 5e-4;
-inline constexpr double shapeDesignViscosity = 0.1;
+inline constexpr double shapeDesignViscosity = 1.0;
 
 inline double viscosityOf(FluidMode mode)
 {

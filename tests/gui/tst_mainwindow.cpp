@@ -7,6 +7,8 @@
 #include "model/SceneFile.h"
 #include "render/Exporter.h"
 
+#include <glm/geometric.hpp>
+
 #include <QAction>
 #include <QDialogButtonBox>
 #include <QLineEdit>
@@ -129,7 +131,7 @@ private slots:
         MainWindow& w = *m_window;
         const Geometry before = geometry(w);
         w.findChild<QAction*>(QStringLiteral("toolStylus"))->trigger();
-        QWidget& canvas = w.canvas();
+        Canvas& canvas = w.canvas();
         QTest::mousePress(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.2, 0.5}).toPoint());
         for (int i = 1; i <= 6; ++i) {
             QTest::mouseMove(&canvas, canvas.mapFromCanvas({0.2 + 0.1 * i, 0.5}).toPoint(), 15);
@@ -174,13 +176,15 @@ private slots:
         QAbstractItemModel& model = *view.model();
         // Rename in place: select the top row, F2, type, Enter.
         view.setCurrentIndex(model.index(0, 0));
+        view.setFocus();
         QTest::keyClick(&view, Qt::Key_F2);
-        auto* editor = view.findChild<QLineEdit*>();
+        auto* editor = qobject_cast<QLineEdit*>(QApplication::focusWidget());
         QVERIFY(editor);
         editor->selectAll();
         QTest::keyClicks(editor, QStringLiteral("header"));
         QTest::keyClick(editor, Qt::Key_Return);
-        QCOMPARE(w.document().regions()[1].name, QStringLiteral("header"));
+        // The delegate commits on Return through a queued call.
+        QTRY_COMPARE(w.document().regions()[1].name, QStringLiteral("header"));
         // Recolour through the model the view shows (the colour dialog itself is Qt's).
         QVERIFY(model.setData(model.index(1, 0), QColor(Qt::darkGreen), model::RegionListModel::ColorRole));
         QCOMPARE(w.document().regions()[0].color, QColor(Qt::darkGreen));

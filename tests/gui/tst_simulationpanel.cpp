@@ -258,7 +258,7 @@ void TestSimulationPanel::modeFollowsTheViscosity()
     const QRadioButton* marbling = child<QRadioButton>(*panel, "marbling");
     const QRadioButton* shapeDesign = child<QRadioButton>(*panel, "shapeDesign");
 
-    typeAndCommit(viscosity, QStringLiteral("0.1"));
+    typeAndCommit(viscosity, QString::number(model::shapeDesignViscosity));
     QVERIFY(shapeDesign->isChecked() && !marbling->isChecked());
     typeAndCommit(viscosity, QStringLiteral("0.3"));  // a custom fluid: neither mode
     QVERIFY(!shapeDesign->isChecked() && !marbling->isChecked());
