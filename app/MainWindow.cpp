@@ -187,16 +187,20 @@ void MainWindow::createActions()
     view->addSeparator();
     const struct {
         QString text;
+        const char* name;
         void (Canvas::*set)(bool);
     } overlays[] = {
-        {tr("Show &Vertices"), &Canvas::setShowVertices},
-        {tr("Show Ve&locity"), &Canvas::setShowVelocity},
-        {tr("Show &Grid"), &Canvas::setShowGrid},
+        {tr("Show &Vertices"), "showVertices", &Canvas::setShowVertices},
+        {tr("Show Ve&locity"), "showVelocity", &Canvas::setShowVelocity},
+        {tr("Show &Grid"), "showGrid", &Canvas::setShowGrid},
     };
     for (const auto& o : overlays) {
         QAction* a = view->addAction(o.text);
+        a->setObjectName(QLatin1String(o.name));
         a->setCheckable(true);
         connect(a, &QAction::toggled, m_canvas, o.set);
+        if (o.set == &Canvas::setShowVelocity)
+            connect(a, &QAction::toggled, &m_simulation, &SimulationController::setVelocityWanted);
     }
     view->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())

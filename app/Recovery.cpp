@@ -64,20 +64,29 @@ void Recovery::saveNow()
 {
     if (!m_lock || m_writing > 0)
         return;
-    // The project is put together here, where the document lives; the states it refers to are
-    // immutable, so the slow part (encoding and writing) runs on a pool thread.
+    // Nothing here may hold up the GUI: the current state is taken on the worker and awaited by
+    // polling; once it is in, every state the history refers to is too (requests run in order),
+    // so putting the project together does not wait, and the slow part (encoding and writing the
+    // immutable states) runs on a pool thread.
     auto now = std::make_shared<model::StateSlot>();
     m_document.port().snapshot(now);
     ++m_writing;
-    auto project = std::make_shared<model::Project>(m_document.project(now));
-    const QString path = filePath();
-    QThreadPool::globalInstance()->start([this, project, path] {
-        const QString error = model::writeProjectFile(*project, path);
-        QMetaObject::invokeMethod(this, [this, error] {
-            --m_writing;
-            emit saved(error);
-        }, Qt::QueuedConnection);
+    auto* poll = new QTimer(this);
+    poll->setInterval(20);
+    connect(poll, &QTimer::timeout, this, [this, poll, now] {
+        if (!now->state())
+            return;
+        poll->deleteLater();
+        auto project = std::make_shared<model::Project>(m_document.project(now));
+        QThreadPool::globalInstance()->start([this, project, path = filePath()] {
+            const QString error = model::writeProjectFile(*project, path);
+            QMetaObject::invokeMethod(this, [this, error] {
+                --m_writing;
+                emit saved(error);
+            }, Qt::QueuedConnection);
+        });
     });
+    poll->start();
 }
 
 void Recovery::discard()

@@ -32,8 +32,8 @@ public:
     void setInterval(int seconds);
     int interval() const { return m_timer.interval() / 1000; }
 
-    // Takes the current state and writes the recovery file in the background; `done` (optional)
-    // is emitted as saved(error) when the file is written.
+    // Takes the current state and writes the recovery file in the background, without blocking;
+    // saved(error) follows when the file is written.
     void saveNow();
     // Removes the recovery file (after a save, or on a clean exit).
     void discard();

@@ -84,6 +84,11 @@ void SimulationController::stepOnce()
     post([](SimulationWorker& w) { w.stepOnce(); });
 }
 
+void SimulationController::setVelocityWanted(bool wanted)
+{
+    post([wanted](SimulationWorker& w) { w.setVelocityWanted(wanted); });
+}
+
 void SimulationController::receiveFrame()
 {
     if (auto frame = m_worker->takeFrame()) {

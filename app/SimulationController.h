@@ -30,6 +30,7 @@ public:
     void setPlaying(bool playing);
     bool isPlaying() const { return m_playing; }
     void stepOnce();
+    void setVelocityWanted(bool wanted);
 
     // The newest frame received (null before the first).
     std::shared_ptr<const model::Frame> frame() const { return m_frame; }

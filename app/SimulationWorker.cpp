@@ -214,6 +214,8 @@ void SimulationWorker::offerFrame()
         frame->time = m_simulation->time();
         frame->vertexCount = m_simulation->vertexCount();
         frame->regions = m_simulation->regions();
+        if (m_velocityWanted)
+            frame->velocity = m_simulation->velocity();
     }
     {
         std::lock_guard lock(m_frameMutex);

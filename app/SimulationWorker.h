@@ -36,6 +36,8 @@ public:
     void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
     void setPlaying(bool playing);
     void stepOnce();
+    // Frames carry the velocity field only while the canvas shows it (a grid readback each).
+    void setVelocityWanted(bool wanted) { m_velocityWanted = wanted; }
     // After each request: counts it (Frame::serial) and offers a frame showing its effect.
     void requestDone();
 
@@ -65,6 +67,7 @@ private:
     QElapsedTimer m_clock;         // paces playing to real time: one dt of simulated time per dt
     qint64 m_nextStepAt = 0;       // ms on m_clock
     bool m_playing = false;
+    bool m_velocityWanted = false;
     std::uint64_t m_handled = 0;   // requests done
     std::int64_t m_steps = 0;
     double m_stepsPerSecond = 0.0;

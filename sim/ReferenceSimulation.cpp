@@ -105,4 +105,11 @@ StepReport ReferenceSimulation::step(double dt)
     return report;
 }
 
+std::optional<MacVelocity> ReferenceSimulation::velocity() const
+{
+    if (!m_fluid)
+        return std::nullopt;
+    return m_fluid->solver().velocity();
+}
+
 } // namespace vf::sim

@@ -24,6 +24,7 @@ public:
     std::size_t vertexCount() const override { return m_tracker.vertexCount(); }
     int regionCount() const override { return m_regionCount; }
     std::vector<Contour> contours() const override { return m_tracker.contours(); }
+    std::optional<MacVelocity> velocity() const override;
     SimulationState snapshot() const override;
     void restore(const SimulationState& state) override;
 

@@ -7,6 +7,7 @@
 #include "sim/Tracking.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,9 @@ public:
 
     // Every region's contours, indexed by region.
     std::vector<std::vector<Polygon>> regions() const;
+    // The fluid's velocity now (for the app's velocity overlay); none for an analytic flow.
+    // Blocking on OpenCL (a readback of the grid).
+    virtual std::optional<MacVelocity> velocity() const = 0;
 
     // Snapshots, for the app's undo history, backend switching and project files.
     //

@@ -119,6 +119,13 @@ void OpenClSimulation::restore(const SimulationState& state)
     m_time = state.time;
 }
 
+std::optional<MacVelocity> OpenClSimulation::velocity() const
+{
+    if (!m_fluid)
+        return std::nullopt;
+    return m_fluid->readVelocity();
+}
+
 std::unique_ptr<Simulation> makeSimulation(const SimulationSettings& settings, const std::string& backend,
                                            std::optional<int> deviceIndex)
 {

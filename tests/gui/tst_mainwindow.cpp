@@ -145,6 +145,22 @@ private slots:
         QVERIFY2(largestMove(before, after) > 0.005, "the stroke pushed the ink along");
     }
 
+    void velocityOverlayGetsTheField()
+    {
+        MainWindow& w = *m_window;
+        w.simulation().sync();
+        QVERIFY(!w.simulation().frame()->velocity);  // not read back while nobody shows it
+        w.findChild<QAction*>(QStringLiteral("showVelocity"))->trigger();
+        w.document().beginStroke();
+        w.document().stroke({0.2, 0.5}, {0.8, 0.5}, 0.05, 0.1);
+        w.simulation().stepOnce();
+        w.simulation().sync();
+        const auto& field = w.simulation().frame()->velocity;
+        QVERIFY(field);
+        QCOMPARE(field->nx, 32);
+        QVERIFY(glm::length(field->sample({0.5, 0.5})) > 0.0);
+    }
+
     void undoAndRedoRestoreExactGeometry()
     {
         MainWindow& w = *m_window;
