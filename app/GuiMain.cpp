@@ -50,6 +50,16 @@ int guiMain(int argc, char** argv)
             });
         });
     }
+    // The README's screenshot (scripts/screenshot): the window after the scene has played a while.
+    if (const QString shot = qEnvironmentVariable("VF_SCREENSHOT"); !shot.isEmpty()) {
+        const int afterMs = qEnvironmentVariableIntValue("VF_SCREENSHOT_AFTER_MS");
+        QTimer::singleShot(afterMs > 0 ? afterMs : 3000, &app, [&window, &app, shot] {
+            const bool saved = window.grab().save(shot);
+            QTextStream(saved ? stdout : stderr) << (saved ? "wrote " : "vectorfluid: cannot write ") << shot << '\n';
+            window.document().undoStack().setClean();  // nothing to ask about on the way out
+            app.exit(saved ? Done : BadInput);
+        });
+    }
     window.simulation().setPlaying(true);
     return app.exec();
 }

@@ -20,6 +20,7 @@ QString firstLine(const char* what)
 
 SimulationWorker::SimulationWorker(QObject* parent)
     : QObject(parent)
+    , m_stepTimer(this)  // a child, so that it moves to the worker's thread with it
 {
     m_stepTimer.setSingleShot(true);
     connect(&m_stepTimer, &QTimer::timeout, this, &SimulationWorker::step);
