@@ -103,7 +103,10 @@ void Canvas::setBackground(QColor color)
 
 QSizeF Canvas::canvasSize() const
 {
-    return m_frame ? QSizeF(m_frame->width, m_frame->height) : QSizeF(1.0, 1.0);
+    // A degenerate size would make every view transform infinite; show a unit canvas instead.
+    const bool usable = m_frame && m_frame->width > 0.0 && m_frame->height > 0.0
+                     && std::isfinite(m_frame->width) && std::isfinite(m_frame->height);
+    return usable ? QSizeF(m_frame->width, m_frame->height) : QSizeF(1.0, 1.0);
 }
 
 // ---- View ---------------------------------------------------------------------------------------
@@ -250,7 +253,7 @@ void Canvas::paintInk(QSize deviceSize, double dpr)
     painter.fillRect(rect(), palette().color(QPalette::Mid));
     if (!m_frame)
         return;
-    const QRectF page(mapFromCanvas({0.0, 0.0}), mapFromCanvas({m_frame->width, m_frame->height}));
+    const QRectF page(mapFromCanvas({0.0, 0.0}), mapFromCanvas({canvasSize().width(), canvasSize().height()}));
     painter.fillRect(page, m_background);
     painter.setClipRect(page);  // as exported: nothing outside the canvas
 

@@ -270,6 +270,40 @@ private slots:
         QCOMPARE(colourAt(both), QColor(Qt::green));
     }
 
+    void overlaysDrawOnlyWhenOn()
+    {
+        auto frame = std::make_shared<model::Frame>(*twoRegionFrame());
+        sim::MacVelocity field;
+        field.nx = 4;
+        field.ny = 2;
+        field.hx = field.hy = 0.5;
+        field.u.assign(std::size_t((field.nx + 1) * field.ny), 1.0);  // a uniform flow to the right
+        field.v.assign(std::size_t(field.nx * (field.ny + 1)), 0.0);
+        frame->velocity = field;
+        m_canvas->setFrame(frame);
+        const auto colourAt = [&](QPointF canvasPoint) {
+            const QImage image = m_canvas->grab().toImage();
+            return image.pixelColor((m_canvas->mapFromCanvas(canvasPoint) * image.devicePixelRatio()).toPoint());
+        };
+        const QPointF gridLine(1.0, 0.1);    // between cells 1 and 2, on white
+        const QPointF barCorner(1.5, 0.55);  // a vertex of the blue bar
+        QCOMPARE(colourAt(gridLine), QColor(Qt::white));
+        const QColor cornerBefore = colourAt(barCorner);
+        m_canvas->setShowGrid(true);
+        QVERIFY(colourAt(gridLine) != QColor(Qt::white));
+        m_canvas->setShowGrid(false);
+        QCOMPARE(colourAt(gridLine), QColor(Qt::white));
+        m_canvas->setShowVertices(true);
+        QVERIFY(colourAt(barCorner) != cornerBefore);
+
+        // Arrows: some pixels of the white corner (no ink there) change.
+        m_canvas->setShowVertices(false);
+        const QImage without = m_canvas->grab().toImage();
+        m_canvas->setShowVelocity(true);
+        const QImage with = m_canvas->grab().toImage();
+        QVERIFY(with != without);
+    }
+
     void paintedFramesAreCounted()
     {
         m_canvas->grab();

@@ -70,7 +70,7 @@ class TestContourLod : public QObject {
 private slots:
     void bigCircleNeedsFewVerticesAndStaysClose()
     {
-        const sim::Polygon contour = sim::circle({0.5, 0.5}, 0.4, 2.5e-5);  // ~100k vertices
+        const sim::Polygon contour = sim::circle({0.5, 0.5}, 0.4, 1e-4);  // ~25k vertices
         const PixelMapping m{1000.0, 12.0, -7.0};                              // radius 400 px
         QPolygonF kept;
         decimateContour(contour, m, kLodTolerance, kEverywhere, kept);
@@ -95,7 +95,7 @@ private slots:
     void wigglyContourWithinBounds()
     {
         QFETCH(double, scale);
-        const sim::Polygon contour = wigglyContour({0.5, 0.5}, 0.25, 50000);
+        const sim::Polygon contour = wigglyContour({0.5, 0.5}, 0.25, 20000);
         const PixelMapping m{scale, 3.0, 5.0};
         const sim::Polygon device = onDevice(contour, m);
         QPolygonF kept;
