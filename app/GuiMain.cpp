@@ -16,19 +16,21 @@ int guiMain(int argc, char** argv)
 {
     QElapsedTimer sinceLaunch;
     sinceLaunch.start();
+    // Checked before QApplication exists, which would talk to the display (and warn) first.
+    if (argc > 2) {
+        QTextStream(stderr) << "vectorfluid: expected at most one file to open (see vectorfluid --help)\n";
+        return BadInput;
+    }
+    if (argc == 2 && !QFileInfo(QString::fromLocal8Bit(argv[1])).isFile()) {
+        QTextStream(stderr) << QStringLiteral("vectorfluid: no such file or command '%1' (see vectorfluid --help)\n")
+                                   .arg(QString::fromLocal8Bit(argv[1]));
+        return BadInput;
+    }
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("vectorfluid"));
     QApplication::setOrganizationName(QStringLiteral("vectorfluid"));
     QApplication::setApplicationDisplayName(QStringLiteral("Vector Fluid"));
     const QStringList arguments = QApplication::arguments().mid(1);
-    if (arguments.size() > 1) {
-        QTextStream(stderr) << "vectorfluid: expected at most one file to open (see vectorfluid --help)\n";
-        return BadInput;
-    }
-    if (!arguments.isEmpty() && !QFileInfo(arguments.front()).isFile()) {
-        QTextStream(stderr) << QStringLiteral("vectorfluid: no such file or command '%1' (see vectorfluid --help)\n").arg(arguments.front());
-        return BadInput;
-    }
 
     MainWindow window;
     window.show();

@@ -180,10 +180,11 @@ void MainWindow::createActions()
     }
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    view->addAction(tr("Zoom &In"), QKeySequence::ZoomIn, m_canvas, &Canvas::zoomIn);
-    view->addAction(tr("Zoom &Out"), QKeySequence::ZoomOut, m_canvas, &Canvas::zoomOut);
-    view->addAction(tr("&Fit to Window"), QKeySequence(Qt::CTRL | Qt::Key_0), m_canvas, &Canvas::fitToWindow);
-    view->addAction(tr("&Actual Size"), QKeySequence(Qt::CTRL | Qt::Key_1), m_canvas, &Canvas::actualSize);
+    // The canvas's own zoom actions, their shortcuts made window-wide now that a menu shows them.
+    for (QAction* zoom : m_canvas->actions()) {
+        zoom->setShortcutContext(Qt::WindowShortcut);
+        view->addAction(zoom);
+    }
     view->addSeparator();
     const struct {
         QString text;
