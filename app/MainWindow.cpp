@@ -34,6 +34,7 @@ const QString recentKey = QStringLiteral("files/recent");
 // The backend and device last chosen, for new documents.
 const QString backendKey = QStringLiteral("simulation/backend");
 const QString deviceKey = QStringLiteral("simulation/device");
+const QString historyBudgetKey = QStringLiteral("history/budgetMB");
 
 sim::Vec2 toVec(QPointF p)
 {
@@ -69,6 +70,7 @@ MainWindow::MainWindow(QWidget* parent)
     createStatusBar();
     connectDocument();
     m_recovery = new Recovery(m_document, {}, this);
+    setHistoryBudgetMb(QSettings().value(historyBudgetKey, int(model::Document::defaultHistoryBudget >> 20)).toInt());
     resize(1280, 800);
     newDocument();
 }
@@ -103,6 +105,22 @@ void MainWindow::createActions()
     redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
     edit->addAction(undo);
     edit->addAction(redo);
+    edit->addSeparator();
+    edit->addAction(tr("History &Memory…"), this, [this] {
+        bool ok = false;
+        const int mb = QInputDialog::getInt(this, tr("History memory"),
+                                            tr("Memory for undo states (MB); past it the oldest steps can no longer be undone:"),
+                                            int(m_document.historyBudget() >> 20), 16, 1 << 20, 64, &ok);
+        if (ok)
+            setHistoryBudgetMb(mb);
+    });
+    edit->addAction(tr("&Autosave Interval…"), this, [this] {
+        bool ok = false;
+        const int seconds = QInputDialog::getInt(this, tr("Autosave"), tr("Save unsaved work for recovery every (seconds):"),
+                                                 m_recovery->interval(), 5, 3600, 5, &ok);
+        if (ok)
+            m_recovery->setInterval(seconds);
+    });
 
     QToolBar* tools = addToolBar(tr("Tools"));
     tools->setObjectName(QStringLiteral("tools"));
@@ -545,6 +563,12 @@ void MainWindow::copySvg()
         m_report(tr("Cannot copy"), error);
     else
         statusBar()->showMessage(tr("Copied the picture as SVG"), 3000);
+}
+
+void MainWindow::setHistoryBudgetMb(int megabytes)
+{
+    m_document.setHistoryBudget(std::size_t(std::max(16, megabytes)) << 20);
+    QSettings().setValue(historyBudgetKey, std::max(16, megabytes));
 }
 
 // ---- Regions dock -------------------------------------------------------------------------------------

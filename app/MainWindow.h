@@ -53,6 +53,8 @@ public:
     model::Drawing drawing() const;  // the picture as it is now, for export
     QColor inkColor() const { return m_inkColor; }
     void setInkColor(const QColor& color);
+    // The undo history's memory budget (Edit ▸ History Memory; remembered), at least 16 MB.
+    void setHistoryBudgetMb(int megabytes);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
