@@ -1,6 +1,7 @@
 // The export dialog driven through its widgets: the files it writes open in readers, the options
 // reach them, failures are reported without writing, and the choices are remembered. Also
 // Copy as SVG.
+#include "FindChild.h"
 #include "../TestFiles.h"
 #include "../render/SvgReadBack.h"
 #include "app/ClipboardExport.h"
@@ -33,6 +34,8 @@ using namespace vf;
 
 namespace {
 
+using vf::test::child;
+
 // A 2 x 1 canvas: a square and a circle shown, a triangle hidden.
 model::Drawing testDrawing()
 {
@@ -55,15 +58,6 @@ model::Drawing testDrawing()
 }
 
 constexpr int kVisibleRegions = 2;
-
-template <typename T>
-T* child(const QWidget& parent, const char* name)
-{
-    T* widget = parent.findChild<T*>(QLatin1String(name));
-    if (!widget)
-        qFatal("no %s named %s", T::staticMetaObject.className(), name);
-    return widget;
-}
 
 void typeInto(QLineEdit* edit, const QString& text)
 {

@@ -1,6 +1,7 @@
 // The main window, driven as a user drives it: real widgets, QTest mouse and key events, the real
 // simulation worker (reference backend, paused, stepped explicitly so that every run is the
 // same). Each test checks the document, the undo stack and the geometry, not pixels.
+#include "FindChild.h"
 #include "app/ExportDialog.h"
 #include "app/MainWindow.h"
 #include "app/Recovery.h"
@@ -10,7 +11,6 @@
 #include <glm/geometric.hpp>
 
 #include <QAction>
-#include <QDialogButtonBox>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -109,7 +109,7 @@ private slots:
     void dropToolClickAddsARegionShownInTheRegionsView()
     {
         MainWindow& w = *m_window;
-        w.findChild<QAction*>(QStringLiteral("toolDrop"))->trigger();
+        test::child<QAction>(w, "toolDrop")->trigger();
         const QPoint at = w.canvas().mapFromCanvas({0.75, 0.75}).toPoint();
         QTest::mouseClick(&w.canvas(), Qt::LeftButton, {}, at);
         const Geometry g = geometry(w);
@@ -130,7 +130,7 @@ private slots:
     {
         MainWindow& w = *m_window;
         const Geometry before = geometry(w);
-        w.findChild<QAction*>(QStringLiteral("toolStylus"))->trigger();
+        test::child<QAction>(w, "toolStylus")->trigger();
         Canvas& canvas = w.canvas();
         QTest::mousePress(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.2, 0.5}).toPoint());
         for (int i = 1; i <= 6; ++i) {
@@ -150,7 +150,7 @@ private slots:
         MainWindow& w = *m_window;
         w.simulation().sync();
         QVERIFY(!w.simulation().frame()->velocity);  // not read back while nobody shows it
-        w.findChild<QAction*>(QStringLiteral("showVelocity"))->trigger();
+        test::child<QAction>(w, "showVelocity")->trigger();
         w.document().beginStroke();
         w.document().stroke({0.2, 0.5}, {0.8, 0.5}, 0.05, 0.1);
         w.simulation().stepOnce();
@@ -161,13 +161,25 @@ private slots:
         QVERIFY(glm::length(field->sample({0.5, 0.5})) > 0.0);
     }
 
+    void undoAndRedoRestoreExactGeometry_data()
+    {
+        QTest::addColumn<QString>("backend");
+        QTest::newRow("reference") << QStringLiteral("reference");
+        QTest::newRow("opencl") << QStringLiteral("opencl");
+    }
+
     void undoAndRedoRestoreExactGeometry()
     {
+        QFETCH(QString, backend);
         MainWindow& w = *m_window;
+        w.document().openScene(smallScene(), backend);
+        w.simulation().sync();
+        if (!QString::fromStdString(w.simulation().frame()->backend).startsWith(backend))
+            QSKIP("no OpenCL device here: the app fell back to the reference backend");
         for (int i = 0; i < 3; ++i)
             w.simulation().stepOnce();
         const Geometry start = geometry(w);
-        w.findChild<QAction*>(QStringLiteral("toolDrop"))->trigger();
+        test::child<QAction>(w, "toolDrop")->trigger();
         QTest::mouseClick(&w.canvas(), Qt::LeftButton, {}, w.canvas().mapFromCanvas({0.5, 0.45}).toPoint());
         for (int i = 0; i < 5; ++i)
             w.simulation().stepOnce();
@@ -206,7 +218,7 @@ private slots:
         QCOMPARE(w.document().regions()[0].color, QColor(Qt::darkGreen));
         // Reorder with the dock's Lower button: the top region goes under.
         view.setCurrentIndex(model.index(0, 0));
-        QTest::mouseClick(w.findChild<QPushButton*>(QStringLiteral("lower")), Qt::LeftButton);
+        QTest::mouseClick(test::child<QPushButton>(w, "lower"), Qt::LeftButton);
         QCOMPARE(w.document().regions()[0].name, QStringLiteral("header"));
         QCOMPARE(model.index(1, 0).data().toString(), QStringLiteral("header"));
         QCOMPARE(w.document().undoStack().count(), 3);
@@ -253,10 +265,8 @@ private slots:
         w.simulation().sync();
         ExportDialog dialog(w.drawing(), &w);
         const QString svg = m_dir.filePath(QStringLiteral("picture.svg"));
-        dialog.findChild<QLineEdit*>(QStringLiteral("path"))->setText(svg);
-        dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)
-            ? QTest::mouseClick(dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok), Qt::LeftButton)
-            : QTest::mouseClick(dialog.findChild<QPushButton*>(QStringLiteral("export")), Qt::LeftButton);
+        test::child<QLineEdit>(dialog, "path")->setText(svg);
+        QTest::mouseClick(test::child<QPushButton>(dialog, "export"), Qt::LeftButton);
         QCOMPARE(dialog.lastError(), QString());
         QFile file(svg);
         QVERIFY(file.open(QIODevice::ReadOnly));
@@ -273,7 +283,7 @@ private slots:
     {
         MainWindow& w = *m_window;
         QCOMPARE(w.document().settings().flow.viscosity, model::marblingViscosity);
-        w.findChild<QAction*>(QStringLiteral("modeShapeDesign"))->trigger();
+        test::child<QAction>(w, "modeShapeDesign")->trigger();
         QCOMPARE(w.document().settings().flow.viscosity, model::shapeDesignViscosity);
         QCOMPARE(w.document().undoStack().count(), 1);
         // Shape design: motion dies right after a stroke (paper §5.2).
@@ -291,7 +301,7 @@ private slots:
         w.document().undoStack().undo();  // the stroke
         w.document().undoStack().undo();  // the mode
         QCOMPARE(w.document().settings().flow.viscosity, model::marblingViscosity);
-        QVERIFY(w.findChild<QAction*>(QStringLiteral("modeMarbling"))->isChecked());
+        QVERIFY(test::child<QAction>(w, "modeMarbling")->isChecked());
     }
 
     void autosaveRecoversAfterACrash()

@@ -1,6 +1,7 @@
 // The Simulation dock's panel driven through its widgets: every committed edit is exactly one
 // settingsEdited that changes exactly the field edited, showing settings is no edit, the mode and
 // the viscosity follow each other, and the ranges are the scene format's.
+#include "FindChild.h"
 #include "app/SimulationPanel.h"
 
 #include <QCheckBox>
@@ -22,6 +23,8 @@ using namespace vf;
 using model::EngineSettings;
 
 namespace {
+
+using vf::test::child;
 
 sim::opencl::DeviceListing twoDevices()
 {
@@ -53,15 +56,6 @@ EngineSettings testSettings()
     settings.backend = QStringLiteral("opencl");
     settings.device = 1;
     return settings;
-}
-
-template <typename T>
-T* child(const QWidget& parent, const char* name)
-{
-    T* widget = parent.findChild<T*>(QLatin1String(name));
-    if (!widget)
-        qFatal("no %s named %s", T::staticMetaObject.className(), name);
-    return widget;
 }
 
 void typeAndCommit(QAbstractSpinBox* box, const QString& text)
