@@ -40,7 +40,7 @@ int guiMain(int argc, char** argv)
         && QMessageBox::question(&window, QObject::tr("Recover"),
                                  QObject::tr("Vector Fluid did not exit cleanly last time. Recover the unsaved work?"))
             == QMessageBox::Yes)
-        window.openFile(window.recovery().filePath());
+        window.recover();
 
     // The launch benchmark (docs/BENCHMARKS.md): time until the first frame of the simulation is
     // on screen, then quit.

@@ -75,7 +75,15 @@ MainWindow::MainWindow(QWidget* parent)
     newDocument();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // An autosave under way may wait for a state the worker has still to take: the recovery goes
+    // first, while the worker runs. Then nothing of the document may call back into this window.
+    delete m_recovery;
+    m_recovery = nullptr;
+    disconnect(&m_document.undoStack(), nullptr, this, nullptr);
+    disconnect(&m_document, nullptr, this, nullptr);
+}
 
 // ---- Set-up ------------------------------------------------------------------------------------------
 
@@ -366,7 +374,7 @@ void MainWindow::newDocument()
     updateTitle();
 }
 
-bool MainWindow::openFile(const QString& path)
+bool MainWindow::load(const QString& path)
 {
     if (path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive)) {
         const model::ProjectReadResult read = model::readProjectFile(path);
@@ -386,15 +394,34 @@ bool MainWindow::openFile(const QString& path)
     }
     m_canvas->setBackground(m_document.scene().canvas.background);
     m_canvas->fitToWindow();
+    updateTitle();
+    return true;
+}
+
+bool MainWindow::openFile(const QString& path)
+{
+    if (!load(path))
+        return false;
     addRecent(path);
+    return true;
+}
+
+bool MainWindow::recover()
+{
+    if (!load(m_recovery->filePath()))
+        return false;
+    // Recovered work has no file of its own yet, and is unsaved until the user saves it.
+    m_document.setFilePath({});
+    m_document.undoStack().resetClean();
     updateTitle();
     return true;
 }
 
 bool MainWindow::saveTo(const QString& path)
 {
-    m_simulation.sync();
-    const QString error = model::writeProjectFile(m_document.project(), path);
+    // An explicit save waits for the current state and writes on this thread (the user asked to
+    // wait); autosave does the same in the background.
+    const QString error = model::writeProjectFile(m_document.draftProject().finish(), path);
     if (!error.isEmpty()) {
         m_report(tr("Cannot save"), error);
         return false;
@@ -550,14 +577,12 @@ void MainWindow::insertText(const QString& text, QPointF baselineStart)
 
 void MainWindow::exportPicture()
 {
-    m_simulation.sync();
     ExportDialog dialog(drawing(), this);
     dialog.exec();
 }
 
 void MainWindow::copySvg()
 {
-    m_simulation.sync();
     const QString error = copyAsSvg(drawing());
     if (!error.isEmpty())
         m_report(tr("Cannot copy"), error);

@@ -39,6 +39,8 @@ public:
     // Opens a scene (*.vfscene) or project (*.vfproj); on failure reports one line and keeps the
     // open document as it was.
     bool openFile(const QString& path);
+    // Opens what a crashed session left in the recovery file, as unsaved work without a file.
+    bool recover();
     bool saveTo(const QString& path);
     void newDocument();
     bool importSvg(const QString& path);
@@ -60,6 +62,7 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    bool load(const QString& path);
     void createActions();
     void createDocks();
     void createStatusBar();

@@ -45,7 +45,7 @@ Recovery::Recovery(model::Document& document, QString directory, QObject* parent
 
 Recovery::~Recovery()
 {
-    // Background writes hold only immutable states, but they write into our folder: let them end.
+    // A background write reports back to this object: let it end first.
     QThreadPool::globalInstance()->waitForDone();
 }
 
@@ -64,34 +64,26 @@ void Recovery::saveNow()
 {
     if (!m_lock || m_writing > 0)
         return;
-    // Nothing here may hold up the GUI: the current state is taken on the worker and awaited by
-    // polling; once it is in, every state the history refers to is too (requests run in order),
-    // so putting the project together does not wait, and the slow part (encoding and writing the
-    // immutable states) runs on a pool thread.
-    auto now = std::make_shared<model::StateSlot>();
-    m_document.port().snapshot(now);
+    // The draft is the document at this moment; finishing it waits for the states the worker is
+    // still taking, so that and the writing run on a pool thread and the GUI never waits. A
+    // discard() in the meantime makes the finished write stale: it is removed again.
     ++m_writing;
-    auto* poll = new QTimer(this);
-    poll->setInterval(20);
-    connect(poll, &QTimer::timeout, this, [this, poll, now] {
-        if (!now->state())
-            return;
-        poll->deleteLater();
-        auto project = std::make_shared<model::Project>(m_document.project(now));
-        QThreadPool::globalInstance()->start([this, project, path = filePath()] {
-            const QString error = model::writeProjectFile(*project, path);
-            QMetaObject::invokeMethod(this, [this, error] {
-                --m_writing;
+    const int generation = m_generation;
+    QThreadPool::globalInstance()->start([this, draft = m_document.draftProject(), path = filePath(), generation] {
+        const QString error = model::writeProjectFile(draft.finish(), path);
+        QMetaObject::invokeMethod(this, [this, error, generation] {
+            --m_writing;
+            if (generation != m_generation)
+                QFile::remove(filePath());
+            else
                 emit saved(error);
-            }, Qt::QueuedConnection);
-        });
+        }, Qt::QueuedConnection);
     });
-    poll->start();
 }
 
 void Recovery::discard()
 {
-    QThreadPool::globalInstance()->waitForDone();
+    ++m_generation;
     if (m_lock)
         QFile::remove(filePath());
     m_crashed = false;

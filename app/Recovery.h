@@ -47,7 +47,8 @@ private:
     std::unique_ptr<QLockFile> m_lock;
     QTimer m_timer;
     bool m_crashed = false;
-    int m_writing = 0;  // background writes under way
+    int m_writing = 0;     // background writes under way
+    int m_generation = 0;  // discard() counts up: a write begun before it is stale
 };
 
 } // namespace vf::app

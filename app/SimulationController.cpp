@@ -33,7 +33,11 @@ void SimulationController::post(std::function<void(SimulationWorker&)> request)
 {
     ++m_requests;
     QMetaObject::invokeMethod(m_worker, [worker = m_worker, request = std::move(request)] {
-        request(*worker);
+        try {
+            request(*worker);
+        } catch (const std::exception& e) {  // e.g. the OpenCL device failed: never past the event loop
+            worker->fail(e);
+        }
         worker->requestDone();
     }, Qt::QueuedConnection);
 }

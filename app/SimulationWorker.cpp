@@ -29,14 +29,30 @@ SimulationWorker::SimulationWorker(QObject* parent)
 
 SimulationWorker::~SimulationWorker() = default;
 
-void SimulationWorker::build(const model::EngineSettings& settings)
+void SimulationWorker::build(const model::EngineSettings& settings, const sim::SimulationState* state)
 {
     model::Scene scene = m_scene;
     scene.flow = settings.flow;
     scene.tracking = settings.tracking;
+    const sim::SimulationSettings simulationSettings = model::simulationSettings(scene);
     QString fallback;
-    m_simulation = makeBackend(model::simulationSettings(scene), settings.backend,
-                               settings.device >= 0 ? std::optional<int>(settings.device) : std::nullopt, fallback);
+    std::unique_ptr<sim::Simulation> simulation =
+        makeBackend(simulationSettings, settings.backend, settings.device >= 0 ? std::optional<int>(settings.device) : std::nullopt, fallback);
+    if (state) {
+        try {
+            simulation->restore(*state);
+        } catch (const std::exception& e) {
+            // The device cannot hold it (say, more vertices than its memory): the reference
+            // backend can, so the work goes on there.
+            if (simulation->backendName() == "reference")
+                throw;
+            fallback = tr("%1 cannot take this state (%2); using the reference backend")
+                           .arg(backendLabel(*simulation), QString::fromUtf8(e.what()).section('\n', 0, 0));
+            simulation = sim::makeReferenceSimulation(simulationSettings);
+            simulation->restore(*state);
+        }
+    }
+    m_simulation = std::move(simulation);
     m_settings = settings;
     m_backendLabel = backendLabel(*m_simulation);
     if (!fallback.isEmpty())
@@ -49,10 +65,8 @@ void SimulationWorker::load(const model::Scene& scene, const model::EngineSettin
     m_script.emplace(scene);
     m_steps = 0;
     try {
-        build(settings);
-        if (start) {
-            m_simulation->restore(*start->wait());
-        } else {
+        build(settings, start ? start->wait().get() : nullptr);
+        if (!start) {
             for (const model::RegionSpec& r : scene.regions)
                 m_simulation->addRegion(model::shapeContours(r.shape, settings.tracking.maxSpacing));
             m_script->applyDrops(*m_simulation, -INFINITY, 0.0);  // drops at t = 0 are the starting picture
@@ -67,36 +81,41 @@ void SimulationWorker::configure(const model::EngineSettings& settings)
 {
     if (!m_simulation)
         return;
-    // The new simulation takes the old one's state; if it cannot (say a lower vertex limit than
-    // the contours have now), the old one carries on.
+    // The new simulation takes the old one's state; build() replaces the old one only once it
+    // has, so on a failure the old one carries on.
     const sim::SimulationState state = m_simulation->snapshot();
-    std::unique_ptr<sim::Simulation> previous = std::move(m_simulation);
-    const model::EngineSettings previousSettings = m_settings;
-    const QString previousLabel = m_backendLabel;
     try {
-        build(settings);
-        m_simulation->restore(state);
+        build(settings, &state);
     } catch (const std::exception& e) {
-        m_simulation = std::move(previous);
-        m_settings = previousSettings;
-        m_backendLabel = previousLabel;
         stopWith(firstLine(e.what()));
     }
 }
 
 void SimulationWorker::snapshot(const model::StateSlotPtr& into)
 {
-    into->fill(std::make_shared<const sim::SimulationState>(m_simulation ? m_simulation->snapshot() : sim::SimulationState{}));
+    // The slot is filled whatever happens, for someone may wait on it. Without a simulation (its
+    // load failed) the state is empty, and a project holding it fails the writer's checks (its
+    // regions would point past the state's), so no file is overwritten with it.
+    sim::SimulationState state;
+    try {
+        if (m_simulation)
+            state = m_simulation->snapshot();
+    } catch (...) {
+        into->fill(std::make_shared<const sim::SimulationState>());
+        throw;
+    }
+    into->fill(std::make_shared<const sim::SimulationState>(std::move(state)));
 }
 
 void SimulationWorker::restore(const model::StateSlotPtr& from)
 {
     if (!m_simulation)
         return;
+    const model::StatePtr state = from->wait();
     try {
-        m_simulation->restore(*from->wait());
-    } catch (const std::exception& e) {
-        stopWith(firstLine(e.what()));
+        m_simulation->restore(*state);
+    } catch (const std::invalid_argument&) {
+        build(m_settings, state.get());  // the device cannot hold it: build() moves to the reference backend
     }
 }
 
@@ -174,6 +193,11 @@ void SimulationWorker::step()
     }
     offerFrame();
     scheduleStep();
+}
+
+void SimulationWorker::fail(const std::exception& error)
+{
+    stopWith(firstLine(error.what()));
 }
 
 void SimulationWorker::stopWith(const QString& message)

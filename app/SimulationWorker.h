@@ -40,6 +40,8 @@ public:
     void setVelocityWanted(bool wanted) { m_velocityWanted = wanted; }
     // After each request: counts it (Frame::serial) and offers a frame showing its effect.
     void requestDone();
+    // A request threw: stop playing and say why in one line.
+    void fail(const std::exception& error);
 
     // ---- Any thread. --------------------------------------------------------------------------
     // The newest frame, once (null when there is none new). Taking it lets the next one be made.
@@ -52,7 +54,9 @@ signals:
     void playingChanged(bool playing);
 
 private:
-    void build(const model::EngineSettings& settings);
+    // A new simulation with these settings, carrying `state` when given (on the reference backend
+    // if the chosen one cannot hold it); replaces the live one only on success. Throws otherwise.
+    void build(const model::EngineSettings& settings, const sim::SimulationState* state);
     void step();
     void scheduleStep();
     void offerFrame();

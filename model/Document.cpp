@@ -110,22 +110,36 @@ void Document::openProject(const Project& project, const QString& backend, int d
     rebuildHistory(std::move(records), project.historyIndex, project.historyIndex);
 }
 
-Project Document::project(const StateSlotPtr& now)
+ProjectDraft Document::draftProject()
 {
-    StateSlotPtr current = now;
-    if (!current) {
-        current = std::make_shared<StateSlot>();
-        m_port.snapshot(current);
+    ProjectDraft draft;
+    draft.m_now = std::make_shared<StateSlot>();
+    m_port.snapshot(draft.m_now);
+    draft.m_scene = m_scene;
+    draft.m_scene.flow = m_settings.flow;
+    draft.m_scene.tracking = m_settings.tracking;
+    draft.m_regions = m_regions;
+    draft.m_index = m_undo.index();
+    for (int i = 0; i < m_undo.count(); ++i) {
+        CommandRecord r = recordAt(m_undo, i);
+        if (r.isOpen()) {  // the newest command, still running, ends now
+            r.after = draft.m_now;
+            r.regionsAfter = m_regions;
+            r.settingsAfter = m_settings;
+        }
+        draft.m_records.push_back(std::move(r));
     }
+    return draft;
+}
+
+Project ProjectDraft::finish() const
+{
     Project p;
     p.scene = m_scene;
-    p.scene.flow = m_settings.flow;
-    p.scene.tracking = m_settings.tracking;
     p.regions = m_regions;
-    p.state = *current->wait();
-    p.historyIndex = m_undo.index();
-    for (int i = 0; i < m_undo.count(); ++i) {
-        const CommandRecord& r = recordAt(m_undo, i);
+    p.state = *m_now->wait();
+    p.historyIndex = m_index;
+    for (const CommandRecord& r : m_records) {
         HistoryEntry e;
         e.text = r.text;
         e.regionsBefore = r.regionsBefore;
@@ -134,9 +148,8 @@ Project Document::project(const StateSlotPtr& now)
         e.trackingBefore = r.settingsBefore.tracking;
         e.flowAfter = r.settingsAfter.flow;
         e.trackingAfter = r.settingsAfter.tracking;
-        // An open command (the newest, still running) ends now.
         e.before = r.before ? r.before->wait() : nullptr;
-        e.after = r.after ? r.after->wait() : (r.before ? current->state() : nullptr);
+        e.after = r.after ? r.after->wait() : nullptr;
         p.history.push_back(std::move(e));
     }
     return p;
@@ -201,6 +214,8 @@ CommandRecord* Document::openCommand()
 
 void Document::closeCommand(CommandRecord& record)
 {
+    if (m_rebuilding)  // rebuildHistory() moves through the commands without acting
+        return;
     record.after = std::make_shared<StateSlot>();
     m_port.snapshot(record.after);
     record.regionsAfter = m_regions;
@@ -247,15 +262,24 @@ void Document::applySide(const CommandRecord& record, bool after)
 {
     if (m_rebuilding)
         return;
-    if (record.touchesSimulation()) {
-        const EngineSettings& settings = after ? record.settingsAfter : record.settingsBefore;
-        if (settings != m_settings)
-            m_port.configure(settings);
-        m_port.restore(after ? record.after : record.before);
-        m_restoreSerial = m_port.requestCount();
-        applySettings(settings);
+    const RegionTable& table = after ? record.regionsAfter : record.regionsBefore;
+    if (!record.touchesSimulation()) {
+        // The simulation stays as it is, with any regions its scene has landed since the look
+        // edit: they keep their rows.
+        RegionTable kept = table;
+        for (const RegionLook& r : m_regions)
+            if (r.simIndex >= int(table.size()))
+                kept.push_back(r);
+        replaceRegions(kept);
+        return;
     }
-    replaceRegions(after ? record.regionsAfter : record.regionsBefore);
+    const EngineSettings& settings = after ? record.settingsAfter : record.settingsBefore;
+    if (settings != m_settings)
+        m_port.configure(settings);
+    m_port.restore(after ? record.after : record.before);
+    m_restoreSerial = m_port.requestCount();
+    applySettings(settings);
+    replaceRegions(table);
 }
 
 void Document::applySettings(const EngineSettings& settings)
@@ -281,11 +305,15 @@ void Document::drop(sim::Vec2 center, double radius, const QColor& color)
 void Document::beginStroke()
 {
     pushSimulationCommand(tr("Stylus stroke"), [] {});
+    m_stroke = static_cast<const DocumentCommand*>(m_undo.command(m_undo.index() - 1))->record();
 }
 
 void Document::stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
 {
-    m_port.stylus(from, to, radius, seconds);
+    // Only while the stroke's command is still the open one: after an undo in mid-stroke (or any
+    // other command) the rest of the pen's path belongs to no command and is dropped.
+    if (const auto stroke = m_stroke.lock(); stroke && openCommand() == stroke.get())
+        m_port.stylus(from, to, radius, seconds);
 }
 
 void Document::addRegions(const QString& commandText, const std::vector<NewRegion>& regions)

@@ -22,6 +22,22 @@ struct NewRegion {
     std::vector<sim::Polygon> contours;
 };
 
+// Everything a project file needs, taken at one moment: values and state slots, so that it can be
+// finished on any thread (the slots awaited) while the document moves on.
+class ProjectDraft {
+public:
+    // Waits for the states the worker is still taking, then puts the project together.
+    Project finish() const;
+
+private:
+    friend class Document;
+    Scene m_scene;
+    RegionTable m_regions;
+    std::vector<CommandRecord> m_records;  // the newest, if still open, ends at m_now
+    int m_index = 0;
+    StateSlotPtr m_now;
+};
+
 class Document final : public QObject {
     Q_OBJECT
 
@@ -35,9 +51,9 @@ public:
     // Opening replaces the whole document and its history.
     void openScene(const Scene& scene, const QString& backend, int device = -1);
     void openProject(const Project& project, const QString& backend, int device = -1);
-    // Everything for a project file. Waits for the states the worker has still to take; `now`
-    // (when given) is the current state already taken, else it is taken here.
-    Project project(const StateSlotPtr& now = nullptr);
+    // The document as it is now, for a project file: requests the current state and returns at
+    // once; ProjectDraft::finish() waits for it.
+    ProjectDraft draftProject();
 
     const Scene& scene() const { return m_scene; }
     const RegionTable& regions() const { return m_regions; }
@@ -117,6 +133,7 @@ private:
     std::uint64_t m_restoreSerial = 0;  // frames older than the last restore or load are stale
     std::size_t m_historyBudget = defaultHistoryBudget;
     bool m_rebuilding = false;          // rebuildHistory() replays commands without applying them
+    std::weak_ptr<const CommandRecord> m_stroke;  // the last stroke begun; it takes the pen while its command is open
 };
 
 EngineSettings engineSettingsOf(const Scene& scene, const QString& backend, int device);

@@ -259,6 +259,28 @@ private slots:
         QVERIFY(m_reports.isEmpty());
     }
 
+    void savedWhileTheFlowRunsRedoesToTheSavedState()
+    {
+        MainWindow& w = *m_window;
+        const Geometry start = geometry(w);
+        w.document().drop({0.3, 0.7}, 0.08, Qt::magenta);
+        for (int i = 0; i < 4; ++i)
+            w.simulation().stepOnce();
+        const Geometry saved = geometry(w);  // the drop's command is still open: it ends here
+        const QString path = m_dir.filePath(QStringLiteral("running.vfproj"));
+        QVERIFY(w.saveTo(path));
+
+        MainWindow other;
+        QVERIFY(other.openFile(path));
+        other.simulation().setPlaying(false);
+        QVERIFY(geometry(other) == saved);
+        other.document().undoStack().undo();
+        QVERIFY(geometry(other) == start);
+        other.document().undoStack().redo();
+        QVERIFY(geometry(other) == saved);
+        QVERIFY(other.document().regions() == w.document().regions());
+    }
+
     void exportDialogWritesFilesThatReadersAccept()
     {
         MainWindow& w = *m_window;
@@ -319,16 +341,22 @@ private slots:
         m_window.reset();  // a crash: no close, no clean exit, the file stays
         QVERIFY(QFile::exists(recoveryFile));
 
-        m_answer = QMessageBox::Yes;
         MainWindow next;
+        next.setAsk([this](const QString&, const QString& text, QMessageBox::StandardButtons) {
+            m_questions << text;
+            return QMessageBox::Discard;
+        });
         QVERIFY(next.recovery().hasCrashedSession());
-        QVERIFY(next.openFile(next.recovery().filePath()));
+        QVERIFY(next.recover());
         next.simulation().setPlaying(false);
         QVERIFY(geometry(next) == lost);
         QVERIFY(next.document().regions() == looks);
         QCOMPARE(next.document().undoStack().count(), 1);
-        next.document().undoStack().setClean();
-        next.close();  // a clean exit removes the recovery file
+        // Recovered work is unsaved and has no file: a save must not go into the recovery file.
+        QVERIFY(next.document().isModified());
+        QVERIFY(next.document().filePath().isEmpty());
+        QVERIFY(next.close());  // asks (discarded here), then a clean exit removes the recovery file
+        QCOMPARE(m_questions.size(), 1);
         QVERIFY(!QFile::exists(recoveryFile));
     }
 

@@ -220,6 +220,64 @@ private slots:
         QCOMPARE(doc.regions().size(), std::size_t(2));
     }
 
+    void undoInMidStrokeEndsTheStroke()
+    {
+        FakePort port;
+        Document doc(port);
+        doc.openScene(sceneWithRegions(1), QStringLiteral("reference"));
+        const sim::SimulationState start = port.state;
+        doc.beginStroke();
+        doc.stroke({0.1, 0.1}, {0.2, 0.1}, 0.03, 0.05);
+        doc.undoStack().undo();
+        QVERIFY(port.state == start);
+        doc.stroke({0.2, 0.1}, {0.3, 0.1}, 0.03, 0.05);  // the pen is still down
+        QVERIFY2(port.state == start, "the rest of an undone stroke is dropped");
+    }
+
+    void lookUndoKeepsRegionsTheSceneLandedSince()
+    {
+        FakePort port;
+        Document doc(port);
+        Scene scene = sceneWithRegions(1);
+        scene.strokes.push_back(DropStroke{1.0, {0.5, 0.5}, 0.05, QColor(1, 2, 3), QStringLiteral("late")});
+        doc.openScene(scene, QStringLiteral("reference"));
+        QVERIFY(doc.setRegionColor(0, Qt::green));
+        port.drop({0.5, 0.5}, 0.05);  // the script's drop lands while playing
+        doc.takeFrame(port.frame());
+        QCOMPARE(doc.regions().size(), std::size_t(2));
+        doc.undoStack().undo();
+        QCOMPARE(names(doc.regions()), QStringList({"r0", "late"}));
+        QCOMPARE(doc.regions()[0].color, QColor(0, 0, 0));
+        doc.undoStack().redo();
+        QCOMPARE(names(doc.regions()), QStringList({"r0", "late"}));
+        QCOMPARE(doc.regions()[0].color, QColor(Qt::green));
+    }
+
+    void trimmingAfterASaveLeavesTheNewestCommandOpen()
+    {
+        FakePort port;
+        port.verticesPerRegion = 1000;
+        Document doc(port);
+        doc.openScene(sceneWithRegions(10), QStringLiteral("reference"));
+        doc.drop({0.5, 0.5}, 0.01, Qt::red);
+        doc.undoStack().setClean();  // saved here
+        doc.setHistoryBudget(4 * port.state.bytes());
+        for (int i = 0; i < 6; ++i)
+            doc.drop({0.5, 0.5}, 0.01, Qt::red);
+        QSignalSpy trimmed(&doc, &Document::historyTrimmed);
+        doc.beginStroke();  // trims: the saved state goes, the stroke stays open
+        QVERIFY(!trimmed.isEmpty());
+        QVERIFY(doc.isModified());
+        const sim::SimulationState start = port.state;
+        doc.stroke({0.1, 0.1}, {0.2, 0.1}, 0.03, 0.05);
+        QVERIFY2(!(port.state == start), "the stroke still moves the fluid");
+        const sim::SimulationState end = port.state;
+        doc.undoStack().undo();
+        QVERIFY(port.state == start);
+        doc.undoStack().redo();
+        QVERIFY(port.state == end);
+    }
+
     void historyKeepsToItsBudget()
     {
         FakePort port;
@@ -249,6 +307,32 @@ private slots:
         QCOMPARE(int(doc.regions().size()), 10 + 12 - kept);
     }
 
+    void savingWhileACommandRunsRecordsItsEndAsNow()
+    {
+        FakePort port;
+        Document doc(port);
+        doc.openScene(sceneWithRegions(1), QStringLiteral("reference"));
+        EngineSettings s = doc.settings();
+        s.flow.viscosity = shapeDesignViscosity;
+        doc.setSettings(s);
+        doc.drop({0.5, 0.5}, 0.1, Qt::red);
+        port.flow(0.5);
+        const Project project = doc.draftProject().finish();  // the drop is still running
+        QVERIFY(*project.history[1].after == project.state);
+        QVERIFY(project.history[1].regionsAfter == doc.regions());
+        QCOMPARE(project.history[1].flowAfter.viscosity, shapeDesignViscosity);
+        QVERIFY(doc.undoStack().command(1) && doc.isModified());
+
+        FakePort port2;
+        Document reopened(port2);
+        reopened.openProject(project, QStringLiteral("reference"));
+        reopened.undoStack().undo();
+        reopened.undoStack().redo();
+        QVERIFY(port2.state == project.state);
+        QVERIFY(reopened.regions() == doc.regions());
+        QCOMPARE(port2.configured.flow.viscosity, shapeDesignViscosity);
+    }
+
     void projectReopensWithItsHistory()
     {
         FakePort port;
@@ -259,7 +343,7 @@ private slots:
         QVERIFY(doc.setRegionColor(0, Qt::yellow));
         doc.drop({0.2, 0.5}, 0.1, Qt::blue);
         doc.undoStack().undo();
-        const Project project = doc.project();
+        const Project project = doc.draftProject().finish();
         QCOMPARE(project.history.size(), std::size_t(3));
         QCOMPARE(project.historyIndex, 2);
         QVERIFY(project.history[0].after);  // closed when the recolour started
