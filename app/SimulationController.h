@@ -35,7 +35,7 @@ public:
     // The newest frame received (null before the first).
     std::shared_ptr<const model::Frame> frame() const { return m_frame; }
     // Blocks until the worker has done every request made so far and a frame showing them has
-    // arrived. For tests and for moments that need the document settled (saving, export).
+    // arrived. For tests and benchmarks; the app itself never waits on the worker like this.
     void sync();
 
 signals:
