@@ -64,6 +64,7 @@ void Document::open(const Scene& scene, const EngineSettings& settings, const Re
     m_rebuilding = false;
     m_scene = scene;
     m_script.emplace(m_scene);
+    m_stepsBefore = m_steps = 0;
     m_port.load(m_scene, settings, start);
     m_restoreSerial = m_port.requestCount();
     applySettings(settings);
@@ -84,6 +85,7 @@ void Document::openProject(const Project& project, const QString& backend, int d
 {
     open(project.scene, engineSettingsOf(project.scene, backend, device), project.regions,
          std::make_shared<StateSlot>(std::make_shared<const sim::SimulationState>(project.state)));
+    m_stepsBefore = m_steps = project.steps;
 
     // One slot per distinct state, so states the file shares stay shared.
     std::map<const sim::SimulationState*, StateSlotPtr> slotOfState;
@@ -119,6 +121,7 @@ ProjectDraft Document::draftProject()
     draft.m_scene.flow = m_settings.flow;
     draft.m_scene.tracking = m_settings.tracking;
     draft.m_regions = m_regions;
+    draft.m_steps = m_steps;
     draft.m_index = m_undo.index();
     for (int i = 0; i < m_undo.count(); ++i) {
         CommandRecord r = recordAt(m_undo, i);
@@ -137,6 +140,7 @@ Project ProjectDraft::finish() const
     Project p;
     p.scene = m_scene;
     p.regions = m_regions;
+    p.steps = m_steps;
     p.state = *m_now->wait();
     p.historyIndex = m_index;
     for (const CommandRecord& r : m_records) {
@@ -190,6 +194,7 @@ void Document::takeFrame(const Frame& frame)
 {
     // Only regions the scene's script has landed can appear unannounced; a frame from before the
     // last restore still shows the regions of the state that was replaced.
+    m_steps = m_stepsBefore + frame.steps;
     if (frame.serial < m_restoreSerial || !m_script || frame.regions.size() <= m_regions.size())
         return;
     RegionTable grown = m_regions;

@@ -33,6 +33,7 @@ private:
     friend class Document;
     Scene m_scene;
     RegionTable m_regions;
+    std::int64_t m_steps = 0;
     std::vector<CommandRecord> m_records;  // the newest, if still open, ends at m_now
     int m_index = 0;
     StateSlotPtr m_now;
@@ -130,6 +131,9 @@ private:
     RegionTable m_regions;
     EngineSettings m_settings;
     QString m_filePath;
+    // Steps taken: those of the project it was opened from and those the worker counts since.
+    std::int64_t m_stepsBefore = 0;
+    std::int64_t m_steps = 0;
     std::uint64_t m_restoreSerial = 0;  // frames older than the last restore or load are stale
     std::size_t m_historyBudget = defaultHistoryBudget;
     bool m_rebuilding = false;          // rebuildHistory() replays commands without applying them

@@ -5,6 +5,7 @@
 #include "app/ExportDialog.h"
 #include "app/MainWindow.h"
 #include "app/Recovery.h"
+#include "model/ProjectFile.h"
 #include "model/SceneFile.h"
 #include "render/Exporter.h"
 
@@ -242,6 +243,7 @@ private slots:
         const QString path = m_dir.filePath(QStringLiteral("work.vfproj"));
         QVERIFY(w.saveTo(path));
         QVERIFY(!w.document().isModified());
+        QCOMPARE(model::readProjectFile(path).project.steps, 4);
 
         MainWindow other;
         other.setReport([this](const QString&, const QString& text) { m_reports << text; });
