@@ -22,6 +22,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
+#include <QThreadPool>
 #include <QToolBar>
 #include <QVBoxLayout>
 
@@ -77,8 +78,9 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow()
 {
-    // An autosave under way may wait for a state the worker has still to take: the recovery goes
+    // A save or autosave under way may wait for a state the worker has still to take: they end
     // first, while the worker runs. Then nothing of the document may call back into this window.
+    QThreadPool::globalInstance()->waitForDone();
     delete m_recovery;
     m_recovery = nullptr;
     disconnect(&m_document.undoStack(), nullptr, this, nullptr);
@@ -97,8 +99,8 @@ void MainWindow::createActions()
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     updateRecentMenu();
-    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
-    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(SaveMode::Background); });
+    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, [this] { saveAs(SaveMode::Background); });
     file->addSeparator();
     file->addAction(tr("&Import SVG…"), QKeySequence(Qt::CTRL | Qt::Key_I), this, &MainWindow::chooseImport);
     file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportPicture);
@@ -366,6 +368,7 @@ model::Drawing MainWindow::drawing() const
 
 void MainWindow::newDocument()
 {
+    ++m_opened;
     const QSettings settings;
     m_document.openScene(blankScene(), settings.value(backendKey, QStringLiteral("opencl")).toString(),
                          settings.value(deviceKey, -1).toInt());
@@ -376,6 +379,7 @@ void MainWindow::newDocument()
 
 bool MainWindow::load(const QString& path)
 {
+    ++m_opened;
     if (path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive)) {
         const model::ProjectReadResult read = model::readProjectFile(path);
         if (!read.ok()) {
@@ -419,34 +423,62 @@ bool MainWindow::recover()
 
 bool MainWindow::saveTo(const QString& path)
 {
-    // An explicit save waits for the current state and writes on this thread (the user asked to
-    // wait); autosave does the same in the background.
-    const QString error = model::writeProjectFile(m_document.draftProject().finish(), path);
+    const int index = m_document.undoStack().index();
+    return saved(path, m_opened, index, model::writeProjectFile(m_document.draftProject().finish(), path));
+}
+
+void MainWindow::saveInBackground(const QString& path)
+{
+    // The draft is the document now; waiting for its states and writing them run on a pool
+    // thread, so the window stays live while a long history is written.
+    QThreadPool::globalInstance()->start([this, draft = m_document.draftProject(), path, opened = m_opened,
+                                          index = m_document.undoStack().index()] {
+        const QString error = model::writeProjectFile(draft.finish(), path);
+        QMetaObject::invokeMethod(this, [=, this] { saved(path, opened, index, error); }, Qt::QueuedConnection);
+    });
+    statusBar()->showMessage(tr("Saving %1…").arg(QFileInfo(path).fileName()));
+}
+
+bool MainWindow::saved(const QString& path, int opened, int index, const QString& error)
+{
     if (!error.isEmpty()) {
         m_report(tr("Cannot save"), error);
         return false;
     }
-    m_document.undoStack().setClean();
-    m_document.setFilePath(path);
-    m_recovery->discard();
     addRecent(path);
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 3000);
+    if (opened != m_opened)  // another document was opened while this one was written
+        return true;
+    m_document.setFilePath(path);
+    // Clean only if the history has not moved on while it was written.
+    if (m_document.undoStack().index() == index) {
+        m_document.undoStack().setClean();
+        m_recovery->discard();
+    }
     return true;
 }
 
-bool MainWindow::save()
+bool MainWindow::save(SaveMode mode)
 {
-    return m_document.filePath().isEmpty() ? saveAs() : saveTo(m_document.filePath());
+    if (m_document.filePath().isEmpty())
+        return saveAs(mode);
+    if (mode == SaveMode::Wait)
+        return saveTo(m_document.filePath());
+    saveInBackground(m_document.filePath());
+    return true;
 }
 
-bool MainWindow::saveAs()
+bool MainWindow::saveAs(SaveMode mode)
 {
     QString path = QFileDialog::getSaveFileName(this, tr("Save project"), recentDirectory(), tr("Vector Fluid projects (*.vfproj)"));
     if (path.isEmpty())
         return false;
     if (!path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive))
         path += QLatin1String(".vfproj");
-    return saveTo(path);
+    if (mode == SaveMode::Wait)
+        return saveTo(path);
+    saveInBackground(path);
+    return true;
 }
 
 void MainWindow::open()
@@ -466,7 +498,7 @@ bool MainWindow::maybeSave()
     switch (m_ask(tr("Unsaved changes"), tr("Save the changes to this document first?"),
                   QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel)) {
     case QMessageBox::Save:
-        return save();
+        return save(SaveMode::Wait);  // what comes next (closing, opening) needs it done
     case QMessageBox::Discard:
         return true;
     default:

@@ -41,6 +41,7 @@ public:
     bool openFile(const QString& path);
     // Opens what a crashed session left in the recovery file, as unsaved work without a file.
     bool recover();
+    // Writes the project and waits for it (File ▸ Save writes in the background instead).
     bool saveTo(const QString& path);
     void newDocument();
     bool importSvg(const QString& path);
@@ -67,9 +68,13 @@ private:
     void createDocks();
     void createStatusBar();
     void connectDocument();
+    // The menu saves in the background; the prompt before closing or opening waits.
+    enum class SaveMode { Wait, Background };
     bool maybeSave();
-    bool save();
-    bool saveAs();
+    bool save(SaveMode mode);
+    bool saveAs(SaveMode mode);
+    void saveInBackground(const QString& path);
+    bool saved(const QString& path, int opened, int index, const QString& error);
     void open();
     void exportPicture();
     void copySvg();
@@ -99,6 +104,7 @@ private:
     QLabel* m_stepsLabel = nullptr;
     QLabel* m_fpsLabel = nullptr;
     QLabel* m_backendLabel = nullptr;
+    int m_opened = 0;  // counts documents opened, so a late save result finds its own
     QColor m_inkColor = QColor(0x1d, 0x35, 0x57);
     double m_stylusRadius = 0.03;
     QFont m_textFont = QFont(QStringLiteral("DejaVu Sans"));

@@ -261,6 +261,19 @@ private slots:
         QVERIFY(m_reports.isEmpty());
     }
 
+    void saveShortcutWritesInTheBackground()
+    {
+        MainWindow& w = *m_window;
+        const QString path = m_dir.filePath(QStringLiteral("background.vfproj"));
+        QVERIFY(w.saveTo(path));
+        w.document().drop({0.4, 0.4}, 0.05, Qt::blue);
+        QVERIFY(w.document().isModified());
+        QTest::keyClick(&w, Qt::Key_S, Qt::ControlModifier);
+        QTRY_VERIFY(!w.document().isModified());
+        QCOMPARE(model::readProjectFile(path).project.history.size(), std::size_t(1));
+        QVERIFY(m_reports.isEmpty());
+    }
+
     void savedWhileTheFlowRunsRedoesToTheSavedState()
     {
         MainWindow& w = *m_window;
