@@ -135,6 +135,7 @@ struct DeviceContours::Impl {
     Pass countSplits(const FlowBinding& flow, const Motion& motion);
     Pass splitPass(const FlowBinding& flow, const Motion& motion);
     bool collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours);
+    void markActiveTiles();
     void clearPassFlags();
     Pass readPass();
     void adopt(std::size_t total);
@@ -151,7 +152,7 @@ struct DeviceContours::Impl {
     Scan countScan, sumScan;
     cl::Kernel advect, strain, arcTiles, arcAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
         splitCount, splitScatter, recountContours, collapseDecide, collapseScatter, recentreInPlace,
-        contourTermTiles, contourTermSums, correctArea;
+        markActiveTilesKernel, contourTermTiles, contourTermSums, correctArea;
 
     // Vertices: two sets (compaction scatters from one into the other, then they swap) and scratch.
     std::size_t capacity = 0, vertices = 0;
@@ -160,6 +161,7 @@ struct DeviceContours::Impl {
     cl::Buffer tileOffset;  // uint per vertex: offset within its tile, from the counting kernels
     cl::Buffer work;        // uint per vertex: grid bucket counts, then starts; collapse actions
     cl::Buffer tileTotals;  // one acc4 per tile: uint, acc_t or acc4 totals, as the pass needs
+    cl::Buffer tileActive;  // uint per tile: refinement looks at its vertices (contours_refine.cl)
 
     // Contours: device arrays, and the host's regions and area targets.
     std::size_t contourCapacity = 0;
@@ -168,6 +170,9 @@ struct DeviceContours::Impl {
     cl::Buffer contourOffset, contourCount;  // uint
     cl::Buffer contourLength;                // float, the proximity term's arc lengths
     cl::Buffer contourTarget, contourLambda; // acc_t, the area correction
+    // uint: refinement's contours to look at in this round, and those changed in it.
+    cl::Buffer contourActive, contourChanged;
+    bool everyContourActive = true;  // the first round: contourActive is not consulted
 
     cl::Buffer weights;  // eq. 6's Gaussian, constant
     cl::Buffer status;   // statusWords uint
@@ -208,6 +213,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
                                 {&collapseDecide, "collapseDecide"},
                                 {&collapseScatter, "collapseScatter"},
                                 {&recentreInPlace, "recentreInPlace"},
+                                {&markActiveTilesKernel, "markActiveTiles"},
                                 {&contourTermTiles, "contourTermTiles"},
                                 {&contourTermSums, "contourTermSums"},
                                 {&correctArea, "correctArea"}})
@@ -258,6 +264,7 @@ bool DeviceContours::Impl::reserve(std::size_t needed)
     tileOffset = buffer(paddedCapacity * sizeof(cl_uint));
     work = buffer(paddedCapacity * sizeof(cl_uint));
     tileTotals = buffer((paddedCapacity / localSize + 1) * 4 * accSize);
+    tileActive = buffer((paddedCapacity / localSize + 1) * sizeof(cl_uint));
     capacity = grown;
     return true;
 }
@@ -279,6 +286,8 @@ void DeviceContours::Impl::reserveContours(std::size_t needed)
     contourTarget = target;
     contourLength = buffer(grown * sizeof(float));
     contourLambda = buffer(grown * accSize);
+    contourActive = buffer(grown * sizeof(cl_uint));
+    contourChanged = buffer(grown * sizeof(cl_uint));
     contourCapacity = grown;
 }
 
@@ -305,7 +314,7 @@ bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion)
 }
 
 // Eqs. 3–7 into front.spacing. Scratch, in order of use: back.spacing holds the tiles' arc sums,
-// then each grid entry's distance to another part; back.contour the arc lengths, then the raw
+// then each grid entry's squared distance to another part; back.contour the arc lengths, then the raw
 // spacing; back.motion the grid entries; `work` the bucket starts; tileOffset the vertices' ranks
 // within their buckets, then their slots in the grid.
 void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
@@ -322,7 +331,8 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
     }
     launch(queue, rawSpacing, vertices, flow, front.motion, front.contour, contourOffset, contourCount, n,
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
-           cl_float(settings.proximityLength()), cl_int(settings.proximity), tileOffset, back.spacing, back.contour);
+           cl_float(settings.proximityLength()), g.cellSize, cl_int(settings.proximity), tileOffset, back.spacing,
+           back.contour);
     launch(queue, smoothSpacing, vertices, back.contour, front.contour, contourOffset, contourCount, n, weights,
            cl_int(smoothingRadius), cl_float(settings.minSpacing()), cl_float(settings.maxSpacing), front.spacing);
 }
@@ -338,7 +348,7 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
            tileTotals, g, back.contour, contourLength, work, tileOffset);
     countScan.exclusive(work, g.buckets() + 1);
     launch(queue, gridScatter, vertices, front.motion, front.contour, n, back.contour, g, work, tileOffset,
-           back.motion);
+           back.motion, back.spacing);
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,
@@ -346,10 +356,21 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
 // split pass leaves no edge longer than its spacing (short of the depth cap), so a round whose
 // collapse pass changes nothing is the last: the next split pass would find nothing, and the
 // collapse pass after it would see what this one saw. That saves a counting pass per step.
+//
+// Every contour takes part in the first round; each later round only the contours that changed in
+// the round before (contours_refine.cl), which gives the same result as looking at all of them.
 bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
 {
     bool withinBudget = true, settled = false;
+    const std::size_t contours = regions.size();
+    everyContourActive = true;
     for (int round = 0; round < maxRounds && withinBudget && !settled; ++round) {
+        if (round > 0) {
+            std::swap(contourActive, contourChanged);
+            everyContourActive = false;
+        }
+        queue.enqueueFillBuffer(contourChanged, cl_uint(0), 0, contours * sizeof(cl_uint));
+        markActiveTiles();
         const Pass split = splitPass(flow, motion);
         withinBudget = split.withinBudget;
         // After a split the short edges flagged before it are stale: every colour gets a look.
@@ -357,9 +378,24 @@ bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
         const bool collapsed = colours != 0 && collapsePass(flow, motion, colours);
         settled = !collapsed && !(split.flags & flagSplitCapped);
     }
-    if (!settled && withinBudget)
+    if (!settled && withinBudget) {
+        std::swap(contourActive, contourChanged);
+        everyContourActive = false;
+        markActiveTiles();
         withinBudget = splitPass(flow, motion).withinBudget;
+    }
     return withinBudget;
+}
+
+// tileActive for the present layout of the store: every tile in the first round, else the tiles
+// of the contours in contourActive.
+void DeviceContours::Impl::markActiveTiles()
+{
+    const std::size_t bytes = (tiles() + 1) * sizeof(cl_uint);
+    queue.enqueueFillBuffer(tileActive, cl_uint(everyContourActive ? 1 : 0), 0, bytes);
+    if (!everyContourActive)
+        launch(queue, markActiveTilesKernel, regions.size(), contourOffset, contourCount, cl_uint(regions.size()),
+               contourActive, tileActive);
 }
 
 void DeviceContours::Impl::clearPassFlags()
@@ -384,17 +420,19 @@ DeviceContours::Impl::Pass DeviceContours::Impl::readPass()
 // After a scatter into `back`: contours get their new ranges, the sets swap.
 void DeviceContours::Impl::adopt(std::size_t total)
 {
-    launch(queue, recountContours, regions.size(), contourOffset, contourCount, cl_uint(regions.size()), tileOffset,
-           tileTotals);
+    launch(queue, recountContours, regions.size(), contourOffset, contourCount, cl_uint(regions.size()), tileActive,
+           tileOffset, tileTotals);
     std::swap(front, back);
     vertices = total;
+    markActiveTiles();
 }
 
 DeviceContours::Impl::Pass DeviceContours::Impl::countSplits(const FlowBinding& flow, const Motion& motion)
 {
     clearPassFlags();
     launch(queue, splitCount, vertices + 1, flow, motion, front.motion, front.spacing, front.contour, contourOffset,
-           contourCount, cl_uint(vertices), tileOffset, tileTotals, cl_uint(tiles()), status);
+           contourCount, cl_uint(vertices), tileActive, contourChanged, tileOffset, tileTotals, cl_uint(tiles()),
+           status);
     countScan.exclusive(tileTotals, tiles() + 1);
     return readPass();
 }
@@ -409,10 +447,12 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
     if (pass.total > capacity) {
         if (!reserve(pass.total))
             return {false, false, pass.flags, vertices};
+        markActiveTiles();
         pass = countSplits(flow, motion);  // the counts lived in the scratch that reserve() replaced
     }
     launch(queue, splitScatter, vertices, flow, motion, front.motion, front.spacing, front.contour, contourOffset,
-           contourCount, cl_uint(vertices), tileOffset, tileTotals, back.motion, back.spacing, back.contour, status);
+           contourCount, cl_uint(vertices), tileActive, tileOffset, tileTotals, back.motion, back.spacing, back.contour,
+           status);
     adopt(pass.total);
     return pass;
 }
@@ -428,17 +468,18 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
             continue;
         clearPassFlags();
         launch(queue, collapseDecide, vertices + 1, front.motion, front.spacing, front.contour, contourOffset,
-               contourCount, cl_uint(vertices), colour, work, tileOffset, tileTotals, cl_uint(tiles()), status);
+               contourCount, cl_uint(vertices), colour, tileActive, contourChanged, work, tileOffset, tileTotals,
+               cl_uint(tiles()), status);
         countScan.exclusive(tileTotals, tiles() + 1);
         const Pass pass = readPass();
         if (pass.changed) {
             launch(queue, collapseScatter, vertices, flow, motion, front.motion, front.spacing, front.contour,
-                   contourOffset, contourCount, cl_uint(vertices), work, tileOffset, tileTotals, back.motion,
-                   back.spacing, back.contour);
+                   contourOffset, contourCount, cl_uint(vertices), tileActive, work, tileOffset, tileTotals,
+                   back.motion, back.spacing, back.contour);
             adopt(pass.total);
         } else if (pass.flags & flagRecentred) {
             launch(queue, recentreInPlace, vertices, flow, motion, front.motion, front.spacing, front.contour,
-                   contourOffset, contourCount, cl_uint(vertices), work);
+                   contourOffset, contourCount, cl_uint(vertices), tileActive, work);
         }
         changed = changed || pass.changed || (pass.flags & flagRecentred);
         colours = pass.flags & flagsShortEdge;
