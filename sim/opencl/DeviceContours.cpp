@@ -170,9 +170,10 @@ struct DeviceContours::Impl {
     cl::Buffer contourOffset, contourCount;  // uint
     cl::Buffer contourLength;                // float, the proximity term's arc lengths
     cl::Buffer contourTarget, contourLambda; // acc_t, the area correction
-    // uint: refinement's contours to look at in this round, and those changed in it.
-    cl::Buffer contourActive, contourChanged;
-    bool everyContourActive = true;  // the first round: contourActive is not consulted
+    // uint: refinement's contours to look at in this round, those changed in it, and those the
+    // collapse passes of this round look at (split, or with a short edge, in the split count).
+    cl::Buffer contourActive, contourChanged, contourCollapsing;
+    const cl::Buffer* lookingAt = nullptr;  // the contours tileActive covers; none: every contour
 
     cl::Buffer weights;  // eq. 6's Gaussian, constant
     cl::Buffer status;   // statusWords uint
@@ -288,6 +289,7 @@ void DeviceContours::Impl::reserveContours(std::size_t needed)
     contourLambda = buffer(grown * accSize);
     contourActive = buffer(grown * sizeof(cl_uint));
     contourChanged = buffer(grown * sizeof(cl_uint));
+    contourCollapsing = buffer(grown * sizeof(cl_uint));
     contourCapacity = grown;
 }
 
@@ -357,45 +359,53 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
 // collapse pass changes nothing is the last: the next split pass would find nothing, and the
 // collapse pass after it would see what this one saw. That saves a counting pass per step.
 //
-// Every contour takes part in the first round; each later round only the contours that changed in
-// the round before (contours_refine.cl), which gives the same result as looking at all of them.
+// Every contour takes part in the first round's split pass, each later round's split pass only the
+// contours that changed in the round before, and a round's collapse passes only those that split
+// in it or had a short edge before it (contours_refine.cl): the others would find nothing to do,
+// so the result is the same as looking at all of them.
 bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
 {
     bool withinBudget = true, settled = false;
     const std::size_t contours = regions.size();
-    everyContourActive = true;
     for (int round = 0; round < maxRounds && withinBudget && !settled; ++round) {
+        lookingAt = nullptr;
         if (round > 0) {
             std::swap(contourActive, contourChanged);
-            everyContourActive = false;
+            lookingAt = &contourActive;
         }
         queue.enqueueFillBuffer(contourChanged, cl_uint(0), 0, contours * sizeof(cl_uint));
+        queue.enqueueFillBuffer(contourCollapsing, cl_uint(0), 0, contours * sizeof(cl_uint));
         markActiveTiles();
         const Pass split = splitPass(flow, motion);
         withinBudget = split.withinBudget;
         // After a split the short edges flagged before it are stale: every colour gets a look.
         const cl_uint colours = split.changed ? flagsShortEdge : split.flags & flagsShortEdge;
-        const bool collapsed = colours != 0 && collapsePass(flow, motion, colours);
+        bool collapsed = false;
+        if (colours != 0) {
+            lookingAt = &contourCollapsing;
+            markActiveTiles();
+            collapsed = collapsePass(flow, motion, colours);
+        }
         settled = !collapsed && !(split.flags & flagSplitCapped);
     }
     if (!settled && withinBudget) {
         std::swap(contourActive, contourChanged);
-        everyContourActive = false;
+        lookingAt = &contourActive;
         markActiveTiles();
         withinBudget = splitPass(flow, motion).withinBudget;
     }
     return withinBudget;
 }
 
-// tileActive for the present layout of the store: every tile in the first round, else the tiles
-// of the contours in contourActive.
+// tileActive for the present layout of the store: the tiles of the contours in *lookingAt, or every
+// tile.
 void DeviceContours::Impl::markActiveTiles()
 {
     const std::size_t bytes = (tiles() + 1) * sizeof(cl_uint);
-    queue.enqueueFillBuffer(tileActive, cl_uint(everyContourActive ? 1 : 0), 0, bytes);
-    if (!everyContourActive)
+    queue.enqueueFillBuffer(tileActive, cl_uint(lookingAt ? 0 : 1), 0, bytes);
+    if (lookingAt)
         launch(queue, markActiveTilesKernel, regions.size(), contourOffset, contourCount, cl_uint(regions.size()),
-               contourActive, tileActive);
+               *lookingAt, tileActive);
 }
 
 void DeviceContours::Impl::clearPassFlags()
@@ -431,8 +441,8 @@ DeviceContours::Impl::Pass DeviceContours::Impl::countSplits(const FlowBinding& 
 {
     clearPassFlags();
     launch(queue, splitCount, vertices + 1, flow, motion, front.motion, front.spacing, front.contour, contourOffset,
-           contourCount, cl_uint(vertices), tileActive, contourChanged, tileOffset, tileTotals, cl_uint(tiles()),
-           status);
+           contourCount, cl_uint(vertices), tileActive, contourChanged, contourCollapsing, tileOffset, tileTotals,
+           cl_uint(tiles()), status);
     countScan.exclusive(tileTotals, tiles() + 1);
     return readPass();
 }

@@ -8,7 +8,10 @@
 // Refinement rounds after the first only look at the contours that changed in the round before
 // (contourActive): a contour that neither split nor collapsed in a round has been checked by the
 // split count and every collapse colour in its present state, which the next round would only
-// repeat. Counting kernels skip a tile with no vertex of an active contour (tileActive, uniform
+// repeat. A round's collapse passes only look at the contours that split in it or had a short edge
+// in its split count (contourCollapsing): the others have no edge for a collapse to act on. The
+// split count's short edges are those of collapseAction (length < (d_a + d_b)/4, more than 3
+// vertices). Counting kernels skip a tile with no vertex of an active contour (tileActive, uniform
 // across the work-group) and leave only its total: every vertex in it stays, one to one, so its
 // offsets are the vertices' places in the tile and are never written.
 #define TILE_ARGS __global const uint *tileActive
@@ -130,7 +133,7 @@ VF_INLINE uint shortEdgeFlags(uint k, uint count)
 // split stopped by the depth cap.
 VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
                           __global const uint *contourCount, uint n, TILE_ARGS, __global uint *contourChanged,
-                          __global uint *tileOffset, __global uint *tileTotals, uint tiles, __global uint *status)
+                          __global uint *contourCollapsing, __global uint *tileOffset, __global uint *tileTotals, uint tiles, __global uint *status)
 {
     __local uint scratch[VF_SCAN_SCRATCH];
     __local uint groupFlags;
@@ -150,12 +153,15 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
         bool capped = false;
         if (length > spacing) {
             produced += splitEdge(FLOW_PASS, MOTION_PASS, a, b, inSpacing[i], inSpacing[j], 0, 0, 0, 0, 0, c, &capped);
-            contourChanged[c] = 1;  // a plain store: every writer writes the same value
+            contourChanged[c] = 1;  // plain stores: every writer writes the same value
+            contourCollapsing[c] = 1;
         }
         if (capped)
             atomic_or(&groupFlags, FLAG_SPLIT_CAPPED);
-        if (length < 0.5f * spacing && count > 3)
+        if (length < 0.5f * spacing && count > 3) {
             atomic_or(&groupFlags, shortEdgeFlags(i - contourOffset[c], count));
+            contourCollapsing[c] = 1;
+        }
     }
     scanTile(scratch, produced, tileOffset, tileTotals, tiles);
     if (get_local_id(0) == 0 && groupFlags)
