@@ -150,7 +150,7 @@ struct DeviceContours::Impl {
     const bool fp64;
     const std::size_t accSize;
     Scan countScan, sumScan;
-    cl::Kernel advect, strain, arcTiles, arcAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
+    cl::Kernel advect, strain, arcTilesAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
         splitCount, splitScatter, recountContours, collapseDecide, collapseScatter, recentreInPlace,
         markActiveTilesKernel, contourTermTiles, contourTermSums, correctArea;
 
@@ -202,8 +202,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
     const cl::Program program = device.build(source, "contours.cl", options);
     for (auto [kernel, name] : {std::pair{&advect, "advect"},
                                 {&strain, "strain"},
-                                {&arcTiles, "arcTiles"},
-                                {&arcAndCount, "arcAndCount"},
+                                {&arcTilesAndCount, "arcTilesAndCount"},
                                 {&gridScatter, "gridScatter"},
                                 {&nearestOtherPart, "nearestOtherPart"},
                                 {&rawSpacing, "rawSpacing"},
@@ -316,9 +315,9 @@ bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion)
 }
 
 // Eqs. 3–7 into front.spacing. Scratch, in order of use: back.spacing holds the tiles' arc sums,
-// then each grid entry's squared distance to another part; back.contour the arc lengths, then the raw
-// spacing; back.motion the grid entries; `work` the bucket starts; tileOffset the vertices' ranks
-// within their buckets, then their slots in the grid.
+// then the raw spacing; back.contour each grid entry's squared distance to another part;
+// back.motion the grid entries; `work` the bucket counts, then starts; tileOffset the vertices'
+// ranks within their buckets, then their slots in the grid.
 void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
 {
     const auto n = cl_uint(vertices);
@@ -329,28 +328,26 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
     const Grid g = grid();
     if (settings.proximity) {
         buildGrid(g);
-        launch(queue, nearestOtherPart, vertices, g, n, work, back.motion, contourLength, back.spacing);
+        launch(queue, nearestOtherPart, vertices, g, n, work, back.motion, contourLength, back.contour);
     }
     launch(queue, rawSpacing, vertices, flow, front.motion, front.contour, contourOffset, contourCount, n,
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
-           cl_float(settings.proximityLength()), g.cellSize, cl_int(settings.proximity), tileOffset, back.spacing,
-           back.contour);
-    launch(queue, smoothSpacing, vertices, back.contour, front.contour, contourOffset, contourCount, n, weights,
+           cl_float(settings.proximityLength()), g.cellSize, cl_int(settings.proximity), tileOffset, back.contour,
+           back.spacing);
+    launch(queue, smoothSpacing, vertices, back.spacing, front.contour, contourOffset, contourCount, n, weights,
            cl_int(smoothingRadius), cl_float(settings.minSpacing()), cl_float(settings.maxSpacing), front.spacing);
 }
 
 void DeviceContours::Impl::buildGrid(const Grid& g)
 {
     const auto n = cl_uint(vertices);
-    launch(queue, arcTiles, vertices + 1, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
-           tileTotals, cl_uint(tiles()));
-    sumScan.exclusive(tileTotals, tiles() + 1);
     queue.enqueueFillBuffer(work, cl_uint(0), 0, (g.buckets() + 1) * sizeof(cl_uint));
-    launch(queue, arcAndCount, vertices, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
-           tileTotals, g, back.contour, contourLength, work, tileOffset);
+    launch(queue, arcTilesAndCount, vertices + 1, front.motion, front.contour, contourOffset, contourCount, n, g,
+           back.spacing, tileTotals, cl_uint(tiles()), work, tileOffset);
+    sumScan.exclusive(tileTotals, tiles() + 1);
     countScan.exclusive(work, g.buckets() + 1);
-    launch(queue, gridScatter, vertices, front.motion, front.contour, n, back.contour, g, work, tileOffset,
-           back.motion, back.spacing);
+    launch(queue, gridScatter, vertices, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
+           tileTotals, g, work, tileOffset, back.motion, contourLength, back.contour);
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,

@@ -40,16 +40,22 @@ VF_INLINE uint bucketOf(GRID_ARGS, int2 cell)
 }
 
 // Edge lengths to the next vertex, summed within each tile of VF_LOCAL vertices (exclusive), and
-// each tile's total for the scan. Runs over n + 1 vertices so that the prefix at n exists.
-VF_KERNEL void arcTiles(__global const float4 *motion, CONTOUR_ARGS, uint n, __global float *tileArc,
-                        __global acc_t *tileTotals, uint tiles)
+// each tile's total for the scan; also the grid's per-bucket counts and each vertex's rank in its
+// bucket. Runs over n + 1 vertices so that the prefix at n exists. Counts and ranks come from
+// atomics: the counts do not depend on the order in which work-items arrive, the ranks do (see
+// gridScatter).
+VF_KERNEL void arcTilesAndCount(__global const float4 *motion, CONTOUR_ARGS, uint n, GRID_ARGS,
+                                __global float *tileArc, __global acc_t *tileTotals, uint tiles,
+                                __global uint *bucketCounts, __global uint *rank)
 {
     __local float scratch[VF_SCAN_SCRATCH];
     const uint i = get_global_id(0);
     float length = 0.0f;
     if (i < n) {
         const uint c = contourOf[i];
-        length = distance(motion[i].xy, motion[nextIn(i, contourOffset[c], contourCount[c])].xy);
+        const float2 p = motion[i].xy;
+        length = distance(p, motion[nextIn(i, contourOffset[c], contourCount[c])].xy);
+        rank[i] = atomic_inc(&bucketCounts[bucketOf(GRID_PASS, cellOf(cellSize, p))]);
     }
     float total;
     tileArc[i] = VF_LOCAL_SCAN(float)(scratch, length, &total);
@@ -65,40 +71,29 @@ VF_INLINE acc_t arcBefore(__global const float *tileArc, __global const acc_t *t
     return tilePrefix[i / VF_LOCAL] + (acc_t)tileArc[i];
 }
 
-// Arc length from the contour's first vertex, the contour's length, the grid's per-bucket counts
-// and each vertex's rank in its bucket. Counts and ranks come from atomics: the counts do not
-// depend on the order in which work-items arrive, the ranks do (see gridScatter).
-VF_KERNEL void arcAndCount(__global const float4 *motion, CONTOUR_ARGS, uint n, __global const float *tileArc,
-                           __global const acc_t *tilePrefix, GRID_ARGS, __global float *arc,
-                           __global float *contourLength, __global uint *bucketCounts, __global uint *rank)
+// Counting sort, second half: bucketStart is the exclusive scan of the counts, and every vertex
+// goes to its bucket's start plus its rank; the rank is replaced by that slot. The order within a
+// bucket follows the atomics and may differ from run to run, but nearestOtherPart is a minimum
+// over the bucket's entries, which no order changes, so no result depends on it. An entry is
+// (x, y, arc, contour) as bits, the arc counted from the contour's first vertex; the first vertex
+// also leaves its contour's length. The entry's squared distance to another part starts at the
+// search radius squared (nothing found), as bits for nearestOtherPart's atomic_min.
+VF_KERNEL void gridScatter(__global const float4 *motion, CONTOUR_ARGS, uint n, __global const float *tileArc,
+                           __global const acc_t *tilePrefix, GRID_ARGS, __global const uint *bucketStart,
+                           __global uint *rankThenSlot, __global uint4 *entries, __global float *contourLength,
+                           __global uint *gap2)
 {
     const uint i = get_global_id(0);
     if (i >= n)
         return;
     const uint c = contourOf[i], first = contourOffset[c];
     const acc_t start = arcBefore(tileArc, tilePrefix, first);
-    arc[i] = (float)(arcBefore(tileArc, tilePrefix, i) - start);
+    const float arc = (float)(arcBefore(tileArc, tilePrefix, i) - start);
     if (i == first)
         contourLength[c] = (float)(arcBefore(tileArc, tilePrefix, first + contourCount[c]) - start);
-    rank[i] = atomic_inc(&bucketCounts[bucketOf(GRID_PASS, cellOf(cellSize, motion[i].xy))]);
-}
-
-// Counting sort, second half: bucketStart is the exclusive scan of the counts, and every vertex
-// goes to its bucket's start plus its rank; the rank is replaced by that slot. The order within a
-// bucket follows the atomics and may differ from run to run, but nearestOtherPart is a minimum
-// over the bucket's entries, which no order changes, so no result depends on it. An entry is
-// (x, y, arc, contour) as bits. The entry's squared distance to another part starts at the
-// search radius squared (nothing found), as bits for nearestOtherPart's atomic_min.
-VF_KERNEL void gridScatter(__global const float4 *motion, __global const uint *contourOf, uint n,
-                           __global const float *arc, GRID_ARGS, __global const uint *bucketStart,
-                           __global uint *rankThenSlot, __global uint4 *entries, __global uint *gap2)
-{
-    const uint i = get_global_id(0);
-    if (i >= n)
-        return;
     const float2 p = motion[i].xy;
     const uint slot = bucketStart[bucketOf(GRID_PASS, cellOf(cellSize, p))] + rankThenSlot[i];
-    entries[slot] = (uint4)(as_uint(p.x), as_uint(p.y), as_uint(arc[i]), contourOf[i]);
+    entries[slot] = (uint4)(as_uint(p.x), as_uint(p.y), as_uint(arc), c);
     gap2[slot] = as_uint(cellSize * cellSize);
     rankThenSlot[i] = slot;
 }
