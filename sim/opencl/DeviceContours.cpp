@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 namespace vf::sim::opencl {
@@ -97,6 +100,22 @@ bool isComplete(const cl::Event& event)
     return event.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() <= CL_COMPLETE;
 }
 
+// VF_OPENCL_MAX_VERTICES, a test and diagnostic knob: the device holds at most this many vertices,
+// as if its memory ended there, so the paths past the device's limit can be exercised without
+// exhausting a real device. Unset: no cap.
+std::optional<std::size_t> vertexCapFromEnvironment()
+{
+    const char* value = std::getenv("VF_OPENCL_MAX_VERTICES");
+    if (!value)
+        return std::nullopt;
+    std::size_t cap = 0;
+    const char* end = value + std::strlen(value);
+    const auto [at, error] = std::from_chars(value, end, cap);
+    if (error != std::errc() || at != end || cap == 0)
+        throw DeviceError("VF_OPENCL_MAX_VERTICES='" + std::string(value) + "' is not a positive vertex count");
+    return cap;
+}
+
 template <typename F>
 auto guarded(F&& f) -> decltype(f())
 {
@@ -149,6 +168,7 @@ struct DeviceContours::Impl {
     const TrackingSettings settings;
     const bool fp64;
     const std::size_t accSize;
+    const std::optional<std::size_t> vertexCap;  // VF_OPENCL_MAX_VERTICES
     Scan countScan, sumScan;
     cl::Kernel advect, strain, arcTilesAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
         splitCount, splitScatter, recountContours, collapseDecide, collapseScatter, recentreInPlace,
@@ -189,6 +209,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
     , settings(settings_)
     , fp64(device_.hasFp64())
     , accSize(fp64 ? sizeof(double) : sizeof(float))
+    , vertexCap(vertexCapFromEnvironment())
     , countScan(device_, "uint", sizeof(cl_uint), commonBuildOptions(fp64))
     , sumScan(device_, fp64 ? "double" : "float", accSize, commonBuildOptions(fp64))
     , smoothingRadius(std::max(0, settings_.smoothingRadius))
@@ -235,7 +256,8 @@ std::size_t DeviceContours::Impl::deviceLimit() const
     // The largest buffer is a motion array (16 bytes per vertex, plus a tile of padding).
     const std::uint64_t byAllocation = device.maxAllocation() / sizeof(cl_float4) - 2 * localSize;
     const std::uint64_t byMemory = device.globalMemory() / DeviceContours::bytesPerVertex();
-    return std::size_t(std::min(byAllocation, byMemory));
+    const std::size_t limit = std::size_t(std::min(byAllocation, byMemory));
+    return vertexCap ? std::min(limit, *vertexCap) : limit;
 }
 
 // Grows the vertex capacity geometrically to hold `needed`, keeping the front set's contents.
@@ -754,7 +776,7 @@ std::size_t DeviceContours::bytesPerVertex()
 {
     // Two vertex sets of float4 motion + float spacing + uint contour (24 bytes each), the tile
     // offsets and the work array (4 bytes each): 56. Per tile of 64 vertices one acc4 of 32 bytes
-    // (0.5 per vertex), and the scans' block totals (under 0.05): rounded up, 57.
+    // and a uint flag (0.56 per vertex), and the scans' block totals (under 0.05): rounded up, 57.
     constexpr std::size_t perSet = sizeof(cl_float4) + sizeof(float) + sizeof(cl_uint);
     return 2 * perSet + 2 * sizeof(cl_uint) + 1;
 }
