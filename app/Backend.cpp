@@ -27,4 +27,14 @@ QString backendLabel(const sim::Simulation& simulation)
     return QString::fromStdString(simulation.backendName());
 }
 
+QString vertexLimitLabel(const sim::Simulation& simulation)
+{
+    const std::size_t maxVertices = simulation.settings().tracking.maxVertices;
+    if (const auto* opencl = dynamic_cast<const sim::opencl::OpenClSimulation*>(&simulation)) {
+        if (const std::size_t device = opencl->deviceVertexLimit(); device < maxVertices)
+            return QStringLiteral("the OpenCL device's vertex limit (%1)").arg(device);
+    }
+    return QStringLiteral("max_vertices (%1)").arg(maxVertices);
+}
+
 } // namespace vf::app

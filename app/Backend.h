@@ -19,4 +19,8 @@ std::unique_ptr<sim::Simulation> makeBackend(const sim::SimulationSettings& sett
 // "reference", or "opencl (device name)".
 QString backendLabel(const sim::Simulation& simulation);
 
+// Which limit stops refinement: "max_vertices (N)", or the OpenCL device's vertex limit where that
+// is smaller (its memory, or VF_OPENCL_MAX_VERTICES).
+QString vertexLimitLabel(const sim::Simulation& simulation);
+
 } // namespace vf::app

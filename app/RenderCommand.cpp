@@ -124,7 +124,7 @@ int renderCommand(const QStringList& arguments)
                 return QString();
             return render::exportDrawing(runner.drawing(), framePath(options->framesDir, step, steps), options->exportOptions);
         };
-        const QString vertexLimit = QStringLiteral("max_vertices (%1) reached").arg(read.scene.tracking.maxVertices);
+        const QString vertexLimit = vertexLimitLabel(runner.simulation()) + QStringLiteral(" reached");
         if (runner.vertexLimitReached()) {  // drops at t = 0 already took it there
             totals.limitHit = true;
             totals.limit = vertexLimit;

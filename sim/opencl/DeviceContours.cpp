@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 namespace vf::sim::opencl {
@@ -97,6 +100,22 @@ bool isComplete(const cl::Event& event)
     return event.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() <= CL_COMPLETE;
 }
 
+// VF_OPENCL_MAX_VERTICES, a test and diagnostic knob: the device holds at most this many vertices,
+// as if its memory ended there, so the paths past the device's limit can be exercised without
+// exhausting a real device. Unset: no cap.
+std::optional<std::size_t> vertexCapFromEnvironment()
+{
+    const char* value = std::getenv("VF_OPENCL_MAX_VERTICES");
+    if (!value)
+        return std::nullopt;
+    std::size_t cap = 0;
+    const char* end = value + std::strlen(value);
+    const auto [at, error] = std::from_chars(value, end, cap);
+    if (error != std::errc() || at != end || cap == 0)
+        throw DeviceError("VF_OPENCL_MAX_VERTICES='" + std::string(value) + "' is not a positive vertex count");
+    return cap;
+}
+
 template <typename F>
 auto guarded(F&& f) -> decltype(f())
 {
@@ -135,6 +154,7 @@ struct DeviceContours::Impl {
     Pass countSplits(const FlowBinding& flow, const Motion& motion);
     Pass splitPass(const FlowBinding& flow, const Motion& motion);
     bool collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours);
+    void markActiveTiles();
     void clearPassFlags();
     Pass readPass();
     void adopt(std::size_t total);
@@ -148,10 +168,11 @@ struct DeviceContours::Impl {
     const TrackingSettings settings;
     const bool fp64;
     const std::size_t accSize;
+    const std::optional<std::size_t> vertexCap;  // VF_OPENCL_MAX_VERTICES
     Scan countScan, sumScan;
-    cl::Kernel advect, strain, arcTiles, arcAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
+    cl::Kernel advect, strain, arcTilesAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
         splitCount, splitScatter, recountContours, collapseDecide, collapseScatter, recentreInPlace,
-        contourTermTiles, contourTermSums, correctArea;
+        markActiveTilesKernel, contourTermTiles, contourTermSums, correctArea;
 
     // Vertices: two sets (compaction scatters from one into the other, then they swap) and scratch.
     std::size_t capacity = 0, vertices = 0;
@@ -160,6 +181,7 @@ struct DeviceContours::Impl {
     cl::Buffer tileOffset;  // uint per vertex: offset within its tile, from the counting kernels
     cl::Buffer work;        // uint per vertex: grid bucket counts, then starts; collapse actions
     cl::Buffer tileTotals;  // one acc4 per tile: uint, acc_t or acc4 totals, as the pass needs
+    cl::Buffer tileActive;  // uint per tile: refinement looks at its vertices (contours_refine.cl)
 
     // Contours: device arrays, and the host's regions and area targets.
     std::size_t contourCapacity = 0;
@@ -168,6 +190,10 @@ struct DeviceContours::Impl {
     cl::Buffer contourOffset, contourCount;  // uint
     cl::Buffer contourLength;                // float, the proximity term's arc lengths
     cl::Buffer contourTarget, contourLambda; // acc_t, the area correction
+    // uint: refinement's contours to look at in this round, those changed in it, and those the
+    // collapse passes of this round look at (split, or with a short edge, in the split count).
+    cl::Buffer contourActive, contourChanged, contourCollapsing;
+    const cl::Buffer* lookingAt = nullptr;  // the contours tileActive covers; none: every contour
 
     cl::Buffer weights;  // eq. 6's Gaussian, constant
     cl::Buffer status;   // statusWords uint
@@ -183,6 +209,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
     , settings(settings_)
     , fp64(device_.hasFp64())
     , accSize(fp64 ? sizeof(double) : sizeof(float))
+    , vertexCap(vertexCapFromEnvironment())
     , countScan(device_, "uint", sizeof(cl_uint), commonBuildOptions(fp64))
     , sumScan(device_, fp64 ? "double" : "float", accSize, commonBuildOptions(fp64))
     , smoothingRadius(std::max(0, settings_.smoothingRadius))
@@ -196,8 +223,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
     const cl::Program program = device.build(source, "contours.cl", options);
     for (auto [kernel, name] : {std::pair{&advect, "advect"},
                                 {&strain, "strain"},
-                                {&arcTiles, "arcTiles"},
-                                {&arcAndCount, "arcAndCount"},
+                                {&arcTilesAndCount, "arcTilesAndCount"},
                                 {&gridScatter, "gridScatter"},
                                 {&nearestOtherPart, "nearestOtherPart"},
                                 {&rawSpacing, "rawSpacing"},
@@ -208,6 +234,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
                                 {&collapseDecide, "collapseDecide"},
                                 {&collapseScatter, "collapseScatter"},
                                 {&recentreInPlace, "recentreInPlace"},
+                                {&markActiveTilesKernel, "markActiveTiles"},
                                 {&contourTermTiles, "contourTermTiles"},
                                 {&contourTermSums, "contourTermSums"},
                                 {&correctArea, "correctArea"}})
@@ -229,7 +256,8 @@ std::size_t DeviceContours::Impl::deviceLimit() const
     // The largest buffer is a motion array (16 bytes per vertex, plus a tile of padding).
     const std::uint64_t byAllocation = device.maxAllocation() / sizeof(cl_float4) - 2 * localSize;
     const std::uint64_t byMemory = device.globalMemory() / DeviceContours::bytesPerVertex();
-    return std::size_t(std::min(byAllocation, byMemory));
+    const std::size_t limit = std::size_t(std::min(byAllocation, byMemory));
+    return vertexCap ? std::min(limit, *vertexCap) : limit;
 }
 
 // Grows the vertex capacity geometrically to hold `needed`, keeping the front set's contents.
@@ -258,6 +286,7 @@ bool DeviceContours::Impl::reserve(std::size_t needed)
     tileOffset = buffer(paddedCapacity * sizeof(cl_uint));
     work = buffer(paddedCapacity * sizeof(cl_uint));
     tileTotals = buffer((paddedCapacity / localSize + 1) * 4 * accSize);
+    tileActive = buffer((paddedCapacity / localSize + 1) * sizeof(cl_uint));
     capacity = grown;
     return true;
 }
@@ -279,6 +308,9 @@ void DeviceContours::Impl::reserveContours(std::size_t needed)
     contourTarget = target;
     contourLength = buffer(grown * sizeof(float));
     contourLambda = buffer(grown * accSize);
+    contourActive = buffer(grown * sizeof(cl_uint));
+    contourChanged = buffer(grown * sizeof(cl_uint));
+    contourCollapsing = buffer(grown * sizeof(cl_uint));
     contourCapacity = grown;
 }
 
@@ -305,9 +337,9 @@ bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion)
 }
 
 // Eqs. 3–7 into front.spacing. Scratch, in order of use: back.spacing holds the tiles' arc sums,
-// then each grid entry's distance to another part; back.contour the arc lengths, then the raw
-// spacing; back.motion the grid entries; `work` the bucket starts; tileOffset the vertices' ranks
-// within their buckets, then their slots in the grid.
+// then the raw spacing; back.contour each grid entry's squared distance to another part;
+// back.motion the grid entries; `work` the bucket counts, then starts; tileOffset the vertices'
+// ranks within their buckets, then their slots in the grid.
 void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
 {
     const auto n = cl_uint(vertices);
@@ -318,27 +350,26 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
     const Grid g = grid();
     if (settings.proximity) {
         buildGrid(g);
-        launch(queue, nearestOtherPart, vertices, g, n, work, back.motion, contourLength, back.spacing);
+        launch(queue, nearestOtherPart, vertices, g, n, work, back.motion, contourLength, back.contour);
     }
     launch(queue, rawSpacing, vertices, flow, front.motion, front.contour, contourOffset, contourCount, n,
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
-           cl_float(settings.proximityLength()), cl_int(settings.proximity), tileOffset, back.spacing, back.contour);
-    launch(queue, smoothSpacing, vertices, back.contour, front.contour, contourOffset, contourCount, n, weights,
+           cl_float(settings.proximityLength()), g.cellSize, cl_int(settings.proximity), tileOffset, back.contour,
+           back.spacing);
+    launch(queue, smoothSpacing, vertices, back.spacing, front.contour, contourOffset, contourCount, n, weights,
            cl_int(smoothingRadius), cl_float(settings.minSpacing()), cl_float(settings.maxSpacing), front.spacing);
 }
 
 void DeviceContours::Impl::buildGrid(const Grid& g)
 {
     const auto n = cl_uint(vertices);
-    launch(queue, arcTiles, vertices + 1, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
-           tileTotals, cl_uint(tiles()));
-    sumScan.exclusive(tileTotals, tiles() + 1);
     queue.enqueueFillBuffer(work, cl_uint(0), 0, (g.buckets() + 1) * sizeof(cl_uint));
-    launch(queue, arcAndCount, vertices, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
-           tileTotals, g, back.contour, contourLength, work, tileOffset);
+    launch(queue, arcTilesAndCount, vertices + 1, front.motion, front.contour, contourOffset, contourCount, n, g,
+           back.spacing, tileTotals, cl_uint(tiles()), work, tileOffset);
+    sumScan.exclusive(tileTotals, tiles() + 1);
     countScan.exclusive(work, g.buckets() + 1);
-    launch(queue, gridScatter, vertices, front.motion, front.contour, n, back.contour, g, work, tileOffset,
-           back.motion);
+    launch(queue, gridScatter, vertices, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
+           tileTotals, g, work, tileOffset, back.motion, contourLength, back.contour);
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,
@@ -346,20 +377,54 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
 // split pass leaves no edge longer than its spacing (short of the depth cap), so a round whose
 // collapse pass changes nothing is the last: the next split pass would find nothing, and the
 // collapse pass after it would see what this one saw. That saves a counting pass per step.
+//
+// Every contour takes part in the first round's split pass, each later round's split pass only the
+// contours that changed in the round before, and a round's collapse passes only those that split
+// in it or had a short edge before it (contours_refine.cl): the others would find nothing to do,
+// so the result is the same as looking at all of them.
 bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
 {
     bool withinBudget = true, settled = false;
+    const std::size_t contours = regions.size();
     for (int round = 0; round < maxRounds && withinBudget && !settled; ++round) {
+        lookingAt = nullptr;
+        if (round > 0) {
+            std::swap(contourActive, contourChanged);
+            lookingAt = &contourActive;
+        }
+        queue.enqueueFillBuffer(contourChanged, cl_uint(0), 0, contours * sizeof(cl_uint));
+        queue.enqueueFillBuffer(contourCollapsing, cl_uint(0), 0, contours * sizeof(cl_uint));
+        markActiveTiles();
         const Pass split = splitPass(flow, motion);
         withinBudget = split.withinBudget;
         // After a split the short edges flagged before it are stale: every colour gets a look.
         const cl_uint colours = split.changed ? flagsShortEdge : split.flags & flagsShortEdge;
-        const bool collapsed = colours != 0 && collapsePass(flow, motion, colours);
+        bool collapsed = false;
+        if (colours != 0) {
+            lookingAt = &contourCollapsing;
+            markActiveTiles();
+            collapsed = collapsePass(flow, motion, colours);
+        }
         settled = !collapsed && !(split.flags & flagSplitCapped);
     }
-    if (!settled && withinBudget)
+    if (!settled && withinBudget) {
+        std::swap(contourActive, contourChanged);
+        lookingAt = &contourActive;
+        markActiveTiles();
         withinBudget = splitPass(flow, motion).withinBudget;
+    }
     return withinBudget;
+}
+
+// tileActive for the present layout of the store: the tiles of the contours in *lookingAt, or every
+// tile.
+void DeviceContours::Impl::markActiveTiles()
+{
+    const std::size_t bytes = (tiles() + 1) * sizeof(cl_uint);
+    queue.enqueueFillBuffer(tileActive, cl_uint(lookingAt ? 0 : 1), 0, bytes);
+    if (lookingAt)
+        launch(queue, markActiveTilesKernel, regions.size(), contourOffset, contourCount, cl_uint(regions.size()),
+               *lookingAt, tileActive);
 }
 
 void DeviceContours::Impl::clearPassFlags()
@@ -384,17 +449,19 @@ DeviceContours::Impl::Pass DeviceContours::Impl::readPass()
 // After a scatter into `back`: contours get their new ranges, the sets swap.
 void DeviceContours::Impl::adopt(std::size_t total)
 {
-    launch(queue, recountContours, regions.size(), contourOffset, contourCount, cl_uint(regions.size()), tileOffset,
-           tileTotals);
+    launch(queue, recountContours, regions.size(), contourOffset, contourCount, cl_uint(regions.size()), tileActive,
+           tileOffset, tileTotals);
     std::swap(front, back);
     vertices = total;
+    markActiveTiles();
 }
 
 DeviceContours::Impl::Pass DeviceContours::Impl::countSplits(const FlowBinding& flow, const Motion& motion)
 {
     clearPassFlags();
     launch(queue, splitCount, vertices + 1, flow, motion, front.motion, front.spacing, front.contour, contourOffset,
-           contourCount, cl_uint(vertices), tileOffset, tileTotals, cl_uint(tiles()), status);
+           contourCount, cl_uint(vertices), tileActive, contourChanged, contourCollapsing, tileOffset, tileTotals,
+           cl_uint(tiles()), status);
     countScan.exclusive(tileTotals, tiles() + 1);
     return readPass();
 }
@@ -409,10 +476,12 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
     if (pass.total > capacity) {
         if (!reserve(pass.total))
             return {false, false, pass.flags, vertices};
+        markActiveTiles();
         pass = countSplits(flow, motion);  // the counts lived in the scratch that reserve() replaced
     }
     launch(queue, splitScatter, vertices, flow, motion, front.motion, front.spacing, front.contour, contourOffset,
-           contourCount, cl_uint(vertices), tileOffset, tileTotals, back.motion, back.spacing, back.contour, status);
+           contourCount, cl_uint(vertices), tileActive, tileOffset, tileTotals, back.motion, back.spacing, back.contour,
+           status);
     adopt(pass.total);
     return pass;
 }
@@ -428,17 +497,18 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
             continue;
         clearPassFlags();
         launch(queue, collapseDecide, vertices + 1, front.motion, front.spacing, front.contour, contourOffset,
-               contourCount, cl_uint(vertices), colour, work, tileOffset, tileTotals, cl_uint(tiles()), status);
+               contourCount, cl_uint(vertices), colour, tileActive, contourChanged, work, tileOffset, tileTotals,
+               cl_uint(tiles()), status);
         countScan.exclusive(tileTotals, tiles() + 1);
         const Pass pass = readPass();
         if (pass.changed) {
             launch(queue, collapseScatter, vertices, flow, motion, front.motion, front.spacing, front.contour,
-                   contourOffset, contourCount, cl_uint(vertices), work, tileOffset, tileTotals, back.motion,
-                   back.spacing, back.contour);
+                   contourOffset, contourCount, cl_uint(vertices), tileActive, work, tileOffset, tileTotals,
+                   back.motion, back.spacing, back.contour);
             adopt(pass.total);
         } else if (pass.flags & flagRecentred) {
             launch(queue, recentreInPlace, vertices, flow, motion, front.motion, front.spacing, front.contour,
-                   contourOffset, contourCount, cl_uint(vertices), work);
+                   contourOffset, contourCount, cl_uint(vertices), tileActive, work);
         }
         changed = changed || pass.changed || (pass.flags & flagRecentred);
         colours = pass.flags & flagsShortEdge;
@@ -706,7 +776,7 @@ std::size_t DeviceContours::bytesPerVertex()
 {
     // Two vertex sets of float4 motion + float spacing + uint contour (24 bytes each), the tile
     // offsets and the work array (4 bytes each): 56. Per tile of 64 vertices one acc4 of 32 bytes
-    // (0.5 per vertex), and the scans' block totals (under 0.05): rounded up, 57.
+    // and a uint flag (0.56 per vertex), and the scans' block totals (under 0.05): rounded up, 57.
     constexpr std::size_t perSet = sizeof(cl_float4) + sizeof(float) + sizeof(cl_uint);
     return 2 * perSet + 2 * sizeof(cl_uint) + 1;
 }

@@ -51,7 +51,8 @@ public:
     // Readbacks requested before are dropped. Throws DeviceError.
     void write(const std::vector<Contour>& contours);
     // The most vertices the device's memory holds (max_vertices aside: a state to restore may
-    // have reached past it with its last drop).
+    // have reached past it with its last drop), or VF_OPENCL_MAX_VERTICES when that is smaller
+    // (a test and diagnostic knob; a value that is not a positive count is a DeviceError).
     std::size_t deviceVertexLimit() const;
 
     // The app's readback, asynchronous and double-buffered: requestRead() enqueues non-blocking

@@ -560,6 +560,8 @@ struct DeviceFluid::Impl {
     Impl(Device& device, const FluidSettings& settings);
 
     Field field();
+    // The cell corners: the current field keeps its corner differences after it (flow_fluid.cl).
+    std::size_t cornerCount() const { return std::size_t(nx + 1) * (ny + 1); }
     Stencil5 pressureStencil() const;
     Stencil5 viscousStencil(int component, double nuDt) const;
     void step(double dt);
@@ -583,7 +585,7 @@ struct DeviceFluid::Impl {
     std::vector<DevicePcg> viscosity;  // u, v; none for an inviscid fluid
     Launch advect;
     std::vector<Launch> correct;  // MacCormack's second pass, if any
-    Launch stylus, divergence, gradient, halfway;
+    Launch stylus, divergence, gradient, halfway, corners;
     std::vector<Launch> gather, scatter;
     std::vector<StylusSegment> pending;
 };
@@ -601,7 +603,8 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
     , memory(device, "the " + std::to_string(s.nx) + " x " + std::to_string(s.ny) + " fluid grid")
     , program(device.build(joinedKernelSources({"flow.h.cl", "flow_fluid.cl", "fluid.cl"}),
                            "the fluid solver (fluid.cl)", buildOptions()))
-    , current(field())
+    , current{memory.zeros((uCount + cornerCount()) * sizeof(cl_float)),
+              memory.zeros((vCount + cornerCount()) * sizeof(cl_float))}
     , start{memory.zeros(2 * uCount * sizeof(cl_float)),
             memory.zeros(2 * vCount * sizeof(cl_float))}
     , pressure(device, memory, program, pressureStencil(), float(s.pressureTolerance),
@@ -627,6 +630,7 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
     gradient = overFaces(kernel(program, "subtractGradient", current.u, current.v, pressure.x(), nx,
                                 ny, float(hx), float(hy)));
     halfway = overFaces(kernel(program, "halfway", start.u, start.v, current.u, current.v, nx, ny));
+    corners = overLattice(kernel(program, "cornerDifferences", current.u, current.v, nx, ny), nx + 1, ny + 1);
     if (s.viscosity == 0.0)
         return;
     viscosity.reserve(2);
@@ -667,7 +671,8 @@ Stencil5 DeviceFluid::Impl::viscousStencil(int component, double nuDt) const
 }
 
 // The order of FluidSolver::step: advection from a copy of the field at the step's start (which
-// binding() also hands out), viscosity, the pen, projection; then the halfway field (FluidFlow).
+// binding() also hands out), viscosity, the pen, projection; then the halfway field (FluidFlow)
+// and the corner differences of the new field (the vorticity of the contours' spacing).
 void DeviceFluid::Impl::step(double dt)
 {
     queue.enqueueCopyBuffer(current.u, start.u, 0, 0, uCount * sizeof(cl_float));
@@ -689,6 +694,7 @@ void DeviceFluid::Impl::step(double dt)
     pressure.solve(iterationCap(nx, ny));
     enqueue(queue, gradient);
     enqueue(queue, halfway);
+    enqueue(queue, corners);
 }
 
 void DeviceFluid::Impl::diffuse(double dt)
@@ -779,6 +785,7 @@ void DeviceFluid::writeVelocity(const MacVelocity& velocity)
             writeFloats(m->queue, field->v, velocity.v);
         }
         enqueue(m->queue, m->halfway);  // halfway between the field and itself: the field
+        enqueue(m->queue, m->corners);
         // As FluidSolver::setVelocity: the warm-start pressure belongs to the old history; dropping
         // it makes every later step a function of this velocity alone.
         m->pressure.clearSolution();

@@ -4,7 +4,8 @@
 // Every contour kernel that needs the velocity takes, in this order, the arguments
 //     __global const float* u0, __global const float* v0,   // staggered field at time t0, then
 //                                                           // (fluid) the field halfway to t1
-//     __global const float* u1, __global const float* v1,   // staggered field at time t1
+//     __global const float* u1, __global const float* v1,   // staggered field at time t1, then
+//                                                           // (fluid) its corner differences
 //     int nx, int ny, float hx, float hy, float t0, float dt
 // (FLOW_ARGS in flow.h.cl) and samples through
 //     float2 flowVelocity(FLOW_PARAMS, float2 p, float s);
@@ -13,7 +14,8 @@
 // span's length is computed here in double: t1 − t0 in float would lose digits as time grows.
 // The program prepends one definition of these two functions: flow_fluid.cl (bilinear MAC
 // sampling, linear in time between t0 and t1, as sim/FluidFlow, with the halfway field after the
-// start field in u0 and v0 so that RK4's middle stages sample one field, not two) or the analytic
+// start field in u0 and v0 so that RK4's middle stages sample one field, not two, and the end
+// field's corner differences after it in u1 and v1 for its vorticity) or the analytic
 // flow's expressions translated to OpenCL C (sim/opencl/AnalyticSource). Analytic flows ignore the
 // buffers, which are then 1-element placeholders.
 #include "sim/opencl/OpenCl.h"

@@ -4,11 +4,49 @@
 // contour stays contiguous and in order with no per-contour serial work and perfect balance.
 // The counting kernels fuse the first level of the scan: they leave each vertex's offset within
 // its tile of VF_LOCAL vertices and each tile's total, which Scan turns into tile bases.
+//
+// Refinement rounds after the first only look at the contours that changed in the round before
+// (contourActive): a contour that neither split nor collapsed in a round has been checked by the
+// split count and every collapse colour in its present state, which the next round would only
+// repeat. A round's collapse passes only look at the contours that split in it or had a short edge
+// in its split count (contourCollapsing): the others have no edge for a collapse to act on. The
+// split count's short edges are those of collapseAction (length < (d_a + d_b)/4, more than 3
+// vertices). Counting kernels skip a tile with no vertex of an active contour (tileActive, uniform
+// across the work-group) and leave only its total: every vertex in it stays, one to one, so its
+// offsets are the vertices' places in the tile and are never written.
+#define TILE_ARGS __global const uint *tileActive
 
 // The store index vertex i moves to, or the new size of the store for i = n.
-VF_INLINE uint scannedOffset(__global const uint *tileOffset, __global const uint *tileBase, uint i)
+VF_INLINE uint scannedOffset(TILE_ARGS, __global const uint *tileOffset, __global const uint *tileBase, uint i)
 {
-    return tileBase[i / VF_LOCAL] + tileOffset[i];
+    const uint tile = i / VF_LOCAL;
+    return tileBase[tile] + (tileActive[tile] ? tileOffset[i] : i % VF_LOCAL);
+}
+
+// A counting kernel's work-group over a skipped tile: the tile's total (all n + 1 work-items of a
+// counting kernel lie in tiles; item n produces nothing). True when the tile is skipped.
+VF_INLINE bool skippedTile(TILE_ARGS, uint n, __global uint *tileTotals, uint tiles)
+{
+    const uint tile = get_group_id(0);
+    if (tileActive[tile])
+        return false;
+    if (get_local_id(0) == 0)
+        tileTotals[tile] = min((uint)VF_LOCAL, n - tile * VF_LOCAL);
+    if (get_global_id(0) == 0)
+        tileTotals[tiles] = 0;
+    return true;
+}
+
+// Marks the tiles holding vertices of active contours (tileActive cleared before).
+VF_KERNEL void markActiveTiles(__global const uint *contourOffset, __global const uint *contourCount, uint contours,
+                               __global const uint *contourActive, __global uint *tileActive)
+{
+    const uint c = get_global_id(0);
+    if (c >= contours || !contourActive[c] || contourCount[c] == 0)
+        return;
+    const uint first = contourOffset[c], last = first + contourCount[c] - 1;
+    for (uint tile = first / VF_LOCAL; tile <= last / VF_LOCAL; ++tile)
+        tileActive[tile] = 1;  // a plain store: every writer writes the same value
 }
 
 // Leaves the per-tile offsets and totals of `produced` (see above); all work-items must call it.
@@ -94,11 +132,13 @@ VF_INLINE uint shortEdgeFlags(uint k, uint count)
 // of their ends, so the host can skip the collapse passes that would find nothing to do, and a
 // split stopped by the depth cap.
 VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
-                          __global const uint *contourCount, uint n, __global uint *tileOffset,
-                          __global uint *tileTotals, uint tiles, __global uint *status)
+                          __global const uint *contourCount, uint n, TILE_ARGS, __global uint *contourChanged,
+                          __global uint *contourCollapsing, __global uint *tileOffset, __global uint *tileTotals, uint tiles, __global uint *status)
 {
     __local uint scratch[VF_SCAN_SCRATCH];
     __local uint groupFlags;
+    if (skippedTile(tileActive, n, tileTotals, tiles))
+        return;
     const uint i = get_global_id(0);
     if (get_local_id(0) == 0)
         groupFlags = 0;
@@ -111,12 +151,17 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
         const float length = distance(a.xy, b.xy), spacing = 0.5f * (inSpacing[i] + inSpacing[j]);
         produced = 1;
         bool capped = false;
-        if (length > spacing)
+        if (length > spacing) {
             produced += splitEdge(FLOW_PASS, MOTION_PASS, a, b, inSpacing[i], inSpacing[j], 0, 0, 0, 0, 0, c, &capped);
+            contourChanged[c] = 1;  // plain stores: every writer writes the same value
+            contourCollapsing[c] = 1;
+        }
         if (capped)
             atomic_or(&groupFlags, FLAG_SPLIT_CAPPED);
-        if (length < 0.5f * spacing && count > 3)
+        if (length < 0.5f * spacing && count > 3) {
             atomic_or(&groupFlags, shortEdgeFlags(i - contourOffset[c], count));
+            contourCollapsing[c] = 1;
+        }
     }
     scanTile(scratch, produced, tileOffset, tileTotals, tiles);
     if (get_local_id(0) == 0 && groupFlags)
@@ -124,14 +169,14 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
 }
 
 VF_KERNEL void splitScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
-                            __global const uint *contourCount, uint n, __global const uint *tileOffset,
+                            __global const uint *contourCount, uint n, TILE_ARGS, __global const uint *tileOffset,
                             __global const uint *tileBase, VERTEX_SET(out), __global uint *status)
 {
     const uint i = get_global_id(0);
     if (i >= n)
         return;
-    const uint at = scannedOffset(tileOffset, tileBase, i);
-    const uint expected = scannedOffset(tileOffset, tileBase, i + 1) - at - 1;
+    const uint at = scannedOffset(tileActive, tileOffset, tileBase, i);
+    const uint expected = scannedOffset(tileActive, tileOffset, tileBase, i + 1) - at - 1;
     const uint c = inContour[i];
     outMotion[at] = inMotion[i];
     outSpacing[at] = inSpacing[i];
@@ -148,15 +193,15 @@ VF_KERNEL void splitScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __glob
 
 // After a scatter: where each contour now starts and how many vertices it has.
 VF_KERNEL void recountContours(__global uint *contourOffset, __global uint *contourCount, uint contours,
-                               __global const uint *tileOffset, __global const uint *tileBase)
+                               TILE_ARGS, __global const uint *tileOffset, __global const uint *tileBase)
 {
     const uint c = get_global_id(0);
     if (c >= contours)
         return;
     const uint first = contourOffset[c], end = first + contourCount[c];
-    const uint newFirst = scannedOffset(tileOffset, tileBase, first);
+    const uint newFirst = scannedOffset(tileActive, tileOffset, tileBase, first);
     contourOffset[c] = newFirst;
-    contourCount[c] = scannedOffset(tileOffset, tileBase, end) - newFirst;
+    contourCount[c] = scannedOffset(tileActive, tileOffset, tileBase, end) - newFirst;
 }
 
 // Collapse. The reference walks each ring and removes, for every edge shorter than half its
@@ -198,11 +243,14 @@ VF_INLINE uint collapseAction(__global const float4 *motion, __global const floa
 }
 
 VF_KERNEL void collapseDecide(__global const float4 *motion, __global const float *spacing, CONTOUR_ARGS, uint n,
-                              uint colour, __global uint *action, __global uint *tileOffset,
-                              __global uint *tileTotals, uint tiles, __global uint *status)
+                              uint colour, TILE_ARGS, __global uint *contourChanged, __global uint *action,
+                              __global uint *tileOffset, __global uint *tileTotals, uint tiles,
+                              __global uint *status)
 {
     __local uint scratch[VF_SCAN_SCRATCH];
     __local uint groupFlags;
+    if (skippedTile(tileActive, n, tileTotals, tiles))
+        return;
     const uint i = get_global_id(0);
     if (get_local_id(0) == 0)
         groupFlags = 0;
@@ -221,6 +269,8 @@ VF_KERNEL void collapseDecide(__global const float4 *motion, __global const floa
             atomic_or(&groupFlags, shortEdgeFlags(k, count));
         if (act == ACTION_RECENTRE)
             atomic_or(&groupFlags, FLAG_RECENTRED);
+        if (act != ACTION_KEEP)
+            contourChanged[c] = 1;
         action[i] = act;
     }
     scanTile(scratch, act != ACTION_DELETE && i < n ? 1u : 0u, tileOffset, tileTotals, tiles);
@@ -263,15 +313,18 @@ VF_INLINE void writeRecentred(FLOW_PARAMS, MOTION_ARGS, __global const float4 *i
 }
 
 VF_KERNEL void collapseScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
-                               __global const uint *contourCount, uint n, __global const uint *action,
+                               __global const uint *contourCount, uint n, TILE_ARGS, __global const uint *action,
                                __global const uint *tileOffset, __global const uint *tileBase, VERTEX_SET(out))
 {
     const uint i = get_global_id(0);
-    if (i >= n || action[i] == ACTION_DELETE)
+    if (i >= n)
         return;
-    const uint at = scannedOffset(tileOffset, tileBase, i), c = inContour[i];
+    const uint act = tileActive[i / VF_LOCAL] ? action[i] : ACTION_KEEP;  // skipped tiles wrote none
+    if (act == ACTION_DELETE)
+        return;
+    const uint at = scannedOffset(tileActive, tileOffset, tileBase, i), c = inContour[i];
     outContour[at] = c;
-    if (action[i] == ACTION_RECENTRE) {
+    if (act == ACTION_RECENTRE) {
         writeRecentred(FLOW_PASS, MOTION_PASS, inMotion, inSpacing, i, contourOffset[c], contourCount[c], outMotion,
                        outSpacing, at);
     } else {
@@ -283,10 +336,10 @@ VF_KERNEL void collapseScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __g
 // A collapse pass that only recentres needs no compaction: recentred vertices move in place
 // (their neighbours do not act in the same pass, so nothing they read changes).
 VF_KERNEL void recentreInPlace(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, __global float *spacing, CONTOUR_ARGS,
-                               uint n, __global const uint *action)
+                               uint n, TILE_ARGS, __global const uint *action)
 {
     const uint i = get_global_id(0);
-    if (i >= n || action[i] != ACTION_RECENTRE)
+    if (i >= n || !tileActive[i / VF_LOCAL] || action[i] != ACTION_RECENTRE)
         return;
     const uint c = contourOf[i];
     writeRecentred(FLOW_PASS, MOTION_PASS, motion, spacing, i, contourOffset[c], contourCount[c], motion, spacing, i);

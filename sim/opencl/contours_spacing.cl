@@ -40,16 +40,22 @@ VF_INLINE uint bucketOf(GRID_ARGS, int2 cell)
 }
 
 // Edge lengths to the next vertex, summed within each tile of VF_LOCAL vertices (exclusive), and
-// each tile's total for the scan. Runs over n + 1 vertices so that the prefix at n exists.
-VF_KERNEL void arcTiles(__global const float4 *motion, CONTOUR_ARGS, uint n, __global float *tileArc,
-                        __global acc_t *tileTotals, uint tiles)
+// each tile's total for the scan; also the grid's per-bucket counts and each vertex's rank in its
+// bucket. Runs over n + 1 vertices so that the prefix at n exists. Counts and ranks come from
+// atomics: the counts do not depend on the order in which work-items arrive, the ranks do (see
+// gridScatter).
+VF_KERNEL void arcTilesAndCount(__global const float4 *motion, CONTOUR_ARGS, uint n, GRID_ARGS,
+                                __global float *tileArc, __global acc_t *tileTotals, uint tiles,
+                                __global uint *bucketCounts, __global uint *rank)
 {
     __local float scratch[VF_SCAN_SCRATCH];
     const uint i = get_global_id(0);
     float length = 0.0f;
     if (i < n) {
         const uint c = contourOf[i];
-        length = distance(motion[i].xy, motion[nextIn(i, contourOffset[c], contourCount[c])].xy);
+        const float2 p = motion[i].xy;
+        length = distance(p, motion[nextIn(i, contourOffset[c], contourCount[c])].xy);
+        rank[i] = atomic_inc(&bucketCounts[bucketOf(GRID_PASS, cellOf(cellSize, p))]);
     }
     float total;
     tileArc[i] = VF_LOCAL_SCAN(float)(scratch, length, &total);
@@ -65,48 +71,74 @@ VF_INLINE acc_t arcBefore(__global const float *tileArc, __global const acc_t *t
     return tilePrefix[i / VF_LOCAL] + (acc_t)tileArc[i];
 }
 
-// Arc length from the contour's first vertex, the contour's length, the grid's per-bucket counts
-// and each vertex's rank in its bucket. Counts and ranks come from atomics: the counts do not
-// depend on the order in which work-items arrive, the ranks do (see gridScatter).
-VF_KERNEL void arcAndCount(__global const float4 *motion, CONTOUR_ARGS, uint n, __global const float *tileArc,
-                           __global const acc_t *tilePrefix, GRID_ARGS, __global float *arc,
-                           __global float *contourLength, __global uint *bucketCounts, __global uint *rank)
+// Counting sort, second half: bucketStart is the exclusive scan of the counts, and every vertex
+// goes to its bucket's start plus its rank; the rank is replaced by that slot. The order within a
+// bucket follows the atomics and may differ from run to run, but nearestOtherPart is a minimum
+// over the bucket's entries, which no order changes, so no result depends on it. An entry is
+// (x, y, arc, contour) as bits, the arc counted from the contour's first vertex; the first vertex
+// also leaves its contour's length. The entry's squared distance to another part starts at the
+// search radius squared (nothing found), as bits for nearestOtherPart's atomic_min.
+VF_KERNEL void gridScatter(__global const float4 *motion, CONTOUR_ARGS, uint n, __global const float *tileArc,
+                           __global const acc_t *tilePrefix, GRID_ARGS, __global const uint *bucketStart,
+                           __global uint *rankThenSlot, __global uint4 *entries, __global float *contourLength,
+                           __global uint *gap2)
 {
     const uint i = get_global_id(0);
     if (i >= n)
         return;
     const uint c = contourOf[i], first = contourOffset[c];
     const acc_t start = arcBefore(tileArc, tilePrefix, first);
-    arc[i] = (float)(arcBefore(tileArc, tilePrefix, i) - start);
+    const float arc = (float)(arcBefore(tileArc, tilePrefix, i) - start);
     if (i == first)
         contourLength[c] = (float)(arcBefore(tileArc, tilePrefix, first + contourCount[c]) - start);
-    rank[i] = atomic_inc(&bucketCounts[bucketOf(GRID_PASS, cellOf(cellSize, motion[i].xy))]);
-}
-
-// Counting sort, second half: bucketStart is the exclusive scan of the counts, and every vertex
-// goes to its bucket's start plus its rank; the rank is replaced by that slot. The order within a
-// bucket follows the atomics and may differ from run to run, but nearestOtherPart is a minimum
-// over the bucket's entries, which no order changes, so no result depends on it. An entry is
-// (x, y, arc, contour) as bits.
-VF_KERNEL void gridScatter(__global const float4 *motion, __global const uint *contourOf, uint n,
-                           __global const float *arc, GRID_ARGS, __global const uint *bucketStart,
-                           __global uint *rankThenSlot, __global uint4 *entries)
-{
-    const uint i = get_global_id(0);
-    if (i >= n)
-        return;
     const float2 p = motion[i].xy;
     const uint slot = bucketStart[bucketOf(GRID_PASS, cellOf(cellSize, p))] + rankThenSlot[i];
-    entries[slot] = (uint4)(as_uint(p.x), as_uint(p.y), as_uint(arc[i]), contourOf[i]);
+    entries[slot] = (uint4)(as_uint(p.x), as_uint(p.y), as_uint(arc), c);
+    gap2[slot] = as_uint(cellSize * cellSize);
     rankThenSlot[i] = slot;
 }
 
-// ProximityGrid::nearestOtherPart for every grid entry: the distance to the nearest vertex of
-// another part within the search radius (the cell size), or a negative value when there is none.
-// Work-items run in bucket order, so neighbouring ones search the same cells, which a CPU device
-// then finds in its caches (in contour order, each vertex's 3×3 cells are mostly cache misses).
+// The candidates of one run of entries [from, end) for the entry (p, arc, contour) of a contour of
+// `length`: the smallest squared distance among those of another part, and each of them gets
+// this distance as a candidate for its own minimum (atomic_min on the bits of a non-negative
+// float orders as the floats do, and gives the same result in any order). Four entries at a
+// time, branch-free: most candidates are the vertex's own neighbours along its contour, and a
+// branch per candidate would mispredict. Lanes past the run read the next entries (the array has
+// slack at the end) and are masked out.
+VF_INLINE float nearestInRun(__global const uint4 *entries, uint from, uint end, float2 p, float arc, uint contour,
+                             float length, float radius2, float best2, __global uint *gap2)
+{
+    for (uint e = from; e < end; e += 4) {
+        const uint16 q = vload16(0, (__global const uint *)(entries + e));
+        const float4 dx = as_float4(q.s048c) - p.x, dy = as_float4(q.s159d) - p.y;
+        const float4 dist2 = dx * dx + dy * dy;
+        const float4 along = fabs(as_float4(q.s26ae) - arc);
+        const float4 way = fmin(along, length - along);
+        const int4 skip = ((q.s37bf == (uint4)(contour)) & (way * way <= 4.0f * dist2)) |
+                          ((uint4)(e) + (uint4)(0, 1, 2, 3) >= (uint4)(end));
+        const float4 nearest = select(dist2, (float4)(radius2), skip);
+        best2 = fmin(best2, fmin(fmin(nearest.x, nearest.y), fmin(nearest.z, nearest.w)));
+        if (any(nearest < (float4)(radius2))) {
+            for (int k = 0; k < 4; ++k) {
+                const float d2 = k == 0 ? nearest.x : k == 1 ? nearest.y : k == 2 ? nearest.z : nearest.w;
+                if (d2 < radius2)
+                    atomic_min(&gap2[e + k], as_uint(d2));
+            }
+        }
+    }
+    return best2;
+}
+
+// ProximityGrid::nearestOtherPart for every grid entry: the squared distance to the nearest vertex
+// of another part within the search radius (the cell size), or the radius squared when there is
+// none, as float bits in gap2 (from gridScatter). Distance is symmetric and so is "another part"
+// (same contour, same arcs, same length), so every pair of entries is compared once, by the one
+// that comes first: the entry takes the rest of its own bucket and the next bucket of its row,
+// then the three buckets of the next row (the forward half of the 3×3 cells), and both ends of a
+// pair keep the minimum. Work-items run in bucket order, so neighbouring ones search the same
+// cells, which a CPU device then finds in its caches.
 VF_KERNEL void nearestOtherPart(GRID_ARGS, uint n, __global const uint *bucketStart, __global const uint4 *entries,
-                                __global const float *contourLength, __global float *gap)
+                                __global const float *contourLength, __global uint *gap2)
 {
     const uint self = get_global_id(0);
     if (self >= n)
@@ -115,35 +147,33 @@ VF_KERNEL void nearestOtherPart(GRID_ARGS, uint n, __global const uint *bucketSt
     const float2 p = (float2)(as_float(entry.x), as_float(entry.y));
     const float arc = as_float(entry.z), length = contourLength[entry.w];
     const float radius2 = cellSize * cellSize;
-    float best2 = radius2;
     const int2 cell = cellOf(cellSize, p);
+    const uint lastColumn = (1u << columnBits) - 1u;
+    const uint column = columnOf(GRID_PASS, cell.x);
     const uint left = columnOf(GRID_PASS, cell.x - 1), right = columnOf(GRID_PASS, cell.x + 1);
-    for (int dy = -1; dy <= 1; ++dy) {
-        // The three cells of a row are adjacent buckets, one run of entries, unless the row wraps
-        // around the torus between them: then two runs.
-        const uint row = rowStart(GRID_PASS, cell.y + dy);
-        const bool wraps = left > right;
-        for (int run = 0; run <= (int)wraps; ++run) {
-            const uint from = row + (run == 0 ? left : 0);
-            const uint to = row + (wraps && run == 0 ? (1u << columnBits) - 1u : right);
-            const uint end = bucketStart[to + 1];
-            // Four entries at a time, branch-free: most candidates are the vertex's own neighbours
-            // along its contour, and a branch per candidate would mispredict. Lanes past the run
-            // read the next entries (the array has slack at the end) and are masked out.
-            for (uint e = bucketStart[from]; e < end; e += 4) {
-                const uint16 q = vload16(0, (__global const uint *)(entries + e));
-                const float4 dx = as_float4(q.s048c) - p.x, dy = as_float4(q.s159d) - p.y;
-                const float4 dist2 = dx * dx + dy * dy;
-                const float4 along = fabs(as_float4(q.s26ae) - arc);
-                const float4 way = fmin(along, length - along);
-                const int4 skip = ((q.s37bf == (uint4)(entry.w)) & (way * way <= 4.0f * dist2)) |
-                                  ((uint4)(e) + (uint4)(0, 1, 2, 3) >= (uint4)(end));
-                const float4 nearest = select(dist2, (float4)(radius2), skip);
-                best2 = fmin(best2, fmin(fmin(nearest.x, nearest.y), fmin(nearest.z, nearest.w)));
-            }
-        }
+    // This row: the rest of the entry's bucket and the next one, one run unless the row wraps.
+    const uint row = rowStart(GRID_PASS, cell.y);
+    float best2 = radius2;
+    if (column < lastColumn) {
+        best2 = nearestInRun(entries, self + 1, bucketStart[row + column + 2], p, arc, entry.w, length, radius2, best2,
+                             gap2);
+    } else {
+        best2 = nearestInRun(entries, self + 1, bucketStart[row + column + 1], p, arc, entry.w, length, radius2, best2,
+                             gap2);
+        best2 = nearestInRun(entries, bucketStart[row], bucketStart[row + 1], p, arc, entry.w, length, radius2, best2,
+                             gap2);
     }
-    gap[self] = best2 < radius2 ? sqrt(best2) : -1.0f;
+    // The next row: three adjacent buckets, one run unless the row wraps between them.
+    const uint below = rowStart(GRID_PASS, cell.y + 1);
+    const bool wraps = left > right;
+    for (int run = 0; run <= (int)wraps; ++run) {
+        const uint from = below + (run == 0 ? left : 0);
+        const uint to = below + (wraps && run == 0 ? lastColumn : right);
+        best2 = nearestInRun(entries, bucketStart[from], bucketStart[to + 1], p, arc, entry.w, length, radius2, best2,
+                             gap2);
+    }
+    if (best2 < radius2)
+        atomic_min(&gap2[self], as_uint(best2));
 }
 
 // Menger curvature: 1 / radius of the circle through the three points (SpacingField).
@@ -155,10 +185,12 @@ VF_INLINE float mengerCurvature(float2 before, float2 at, float2 after)
 }
 
 // d_max·exp(−|κ|·Lκ − |ω|/ω_ref)·(1 − exp(−dist/Lp)): eqs. 3, 4, 5 and 7 before smoothing.
-// With `proximity`, the distances come from nearestOtherPart, found through the vertex's grid slot.
+// With `proximity`, the squared distances come from nearestOtherPart, found through the vertex's grid
+// slot (none within the search radius: no proximity term).
 VF_KERNEL void rawSpacing(FLOW_ARGS, __global const float4 *motion, CONTOUR_ARGS, uint n, float maxSpacing,
-                          float curvatureLength, float vorticityScale, float proximityLength, int proximity,
-                          __global const uint *slot, __global const float *gap, __global float *raw)
+                          float curvatureLength, float vorticityScale, float proximityLength, float searchRadius,
+                          int proximity,
+                          __global const uint *slot, __global const uint *gap2, __global float *raw)
 {
     const uint i = get_global_id(0);
     if (i >= n)
@@ -169,9 +201,9 @@ VF_KERNEL void rawSpacing(FLOW_ARGS, __global const float4 *motion, CONTOUR_ARGS
     // exp(−a)·exp(−b) of eqs. 4 and 5 as one exponential.
     float factor = exp(-kappa * curvatureLength - fabs(flowVorticity(FLOW_PASS, p, 1.0f)) / vorticityScale);
     if (proximity) {
-        const float distance = gap[slot[i]];
-        if (distance >= 0.0f)
-            factor *= 1.0f - exp(-distance / proximityLength);
+        const float distance2 = as_float(gap2[slot[i]]);
+        if (distance2 < searchRadius * searchRadius)
+            factor *= 1.0f - exp(-sqrt(distance2) / proximityLength);
     }
     raw[i] = maxSpacing * factor;
 }

@@ -4,6 +4,8 @@
 // start (u0, v0 at t0) and at its end (u1, v1 at t1) as sim/FluidFlow does, so RK4's mid-step
 // samples (eq. 1) see the flow of that moment. u0 and v0 hold, after the start field, the field
 // halfway through the step (FluidFlow's m_middle; DeviceFluid keeps it), which answers s = ½ alone.
+// u1 and v1 hold, after the end field, its corner differences (DeviceFluid keeps them too), so the
+// end field's vorticity is one bilinear sample of each.
 // Comes after flow.h.cl; fluid.cl traces through the same helpers. Every helper is force-inlined:
 // PoCL's vectoriser gives up on kernels that call large functions that are not inlined.
 
@@ -89,6 +91,26 @@ VF_INLINE float macVorticity(__global const float* u, __global const float* v, i
     return dv / hx - du / hy;
 }
 
+// The field's corner differences, stored after the end field (fluid.cl, cornerDifferences): the
+// same values macCornerDu and macCornerDv give, on the (nx + 1) x (ny + 1) corners.
+VF_INLINE __global const float* macCornerDuAfter(__global const float* u, int nx, int ny)
+{
+    return u + (nx + 1) * ny;
+}
+
+VF_INLINE __global const float* macCornerDvAfter(__global const float* v, int nx, int ny)
+{
+    return v + nx * (ny + 1);
+}
+
+// macVorticity from the stored corner differences: the same blends of the same values.
+VF_INLINE float macVorticityFromCorners(__global const float* du, __global const float* dv, int nx,
+                                        int ny, float hx, float hy, float2 p)
+{
+    const MacPoint q = macLocate(nx + 1, ny + 1, p.x / hx, p.y / hy);
+    return macBilinear(dv, nx + 1, q) / hx - macBilinear(du, nx + 1, q) / hy;
+}
+
 // The halfway field, stored after the start field.
 VF_INLINE __global const float* macHalfwayU(__global const float* u0, int nx, int ny)
 {
@@ -130,7 +152,8 @@ VF_INLINE float flowVorticity(FLOW_PARAMS, float2 p, float along)
     const float s = macBlend(dt, along);
     if (s == 0.5f)
         return macVorticity(macHalfwayU(u0, nx, ny), macHalfwayV(v0, nx, ny), nx, ny, hx, hy, p);
-    const float end = macVorticity(u1, v1, nx, ny, hx, hy, p);
+    const float end = macVorticityFromCorners(macCornerDuAfter(u1, nx, ny), macCornerDvAfter(v1, nx, ny),
+                                              nx, ny, hx, hy, p);
     if (s == 1.0f)
         return end;
     const float start = macVorticity(u0, v0, nx, ny, hx, hy, p);

@@ -245,6 +245,7 @@ private slots:
     void polylineHasOnlyLinesBezierIsShorter();
     void vertexLimitExitsThreeAndWrites();
     void dropsOverTheLimitExitThree();
+    void deviceLimitExitsThree();
     void nonFiniteFlowIsOneLine_data();
     void nonFiniteFlowIsOneLine();
 
@@ -670,6 +671,25 @@ void TestCli::dropsOverTheLimitExitThree()
     CHECK_OK(checkOneLineError(r, {scene, QStringLiteral("max_vertices (520) reached at step 0")}, 3));
     QCOMPARE(readJson(statsFile).value(QStringLiteral("limit_reached")).toBool(), true);
     QVERIFY(QFileInfo::exists(svgFile));
+}
+
+void TestCli::deviceLimitExitsThree()
+{
+    // The OpenCL device's vertex limit made smaller than the scene's max_vertices (200): the run
+    // stops there with exit 3 and one line naming that limit, and the files hold the state.
+    if (runCli({QStringLiteral("devices")}).out.startsWith("no OpenCL devices"))
+        QSKIP("no OpenCL device on this machine");
+    const QString svgFile = path(QStringLiteral("a.svg")), statsFile = path(QStringLiteral("s.json"));
+    qputenv("VF_OPENCL_MAX_VERTICES", "150");
+    const CliResult r = runCli({QStringLiteral("render"), kVertexLimit, QStringLiteral("--backend"), QStringLiteral("opencl"),
+                                QStringLiteral("--polyline"), QStringLiteral("--out"), svgFile, QStringLiteral("--stats"),
+                                statsFile});
+    qunsetenv("VF_OPENCL_MAX_VERTICES");
+    CHECK_OK(checkOneLineError(r, {kVertexLimit, QStringLiteral("the OpenCL device's vertex limit (150) reached at step")}, 3));
+    QCOMPARE(readJson(statsFile).value(QStringLiteral("limit_reached")).toBool(), true);
+    const test::ParsedSvg svg = test::parseSvg(svgFile);
+    QVERIFY2(svg.error.isEmpty(), qPrintable(svg.error));
+    QVERIFY(vertexCount(svg) <= 150);
 }
 
 void TestCli::nonFiniteFlowIsOneLine_data()

@@ -3,6 +3,7 @@
 #include "Backends.h"
 #include "Flows.h"
 
+#include "sim/Geometry.h"
 #include "sim/opencl/Device.h"
 #include "sim/opencl/OpenClSimulation.h"
 
@@ -55,6 +56,38 @@ private slots:
         const QString what = failureOf([] { sim::opencl::Device::open(); });
         qunsetenv("VF_OPENCL_DEVICE");
         QVERIFY2(what.contains(QStringLiteral("VF_OPENCL_DEVICE='first'")), qPrintable(what));
+    }
+
+    // VF_OPENCL_MAX_VERTICES makes the device's limit small: refinement past it stops as at
+    // max_vertices (valid contours, the step says so), and a contour past it is one clear line.
+    void deviceLimitStopsRefinement()
+    {
+        qputenv("VF_OPENCL_MAX_VERTICES", "150");
+        sim::opencl::OpenClSimulation sim(test::singleVortex(8.0, 0.01, false), std::nullopt);
+        qunsetenv("VF_OPENCL_MAX_VERTICES");
+        QCOMPARE(sim.deviceVertexLimit(), std::size_t(150));
+        QVERIFY(sim.settings().tracking.maxVertices > 150);
+        sim.addRegion({sim::circle({0.5, 0.75}, 0.15, 0.01)});  // about 95 vertices; the vortex stretches it
+        bool stopped = false;
+        for (int step = 0; step < 200 && !stopped; ++step)
+            stopped = sim.step(0.02).vertexLimitReached;
+        QVERIFY(stopped);
+        QVERIFY(sim.vertexCount() <= 150);
+        for (const sim::Contour& c : sim.contours())
+            QVERIFY(c.positions.size() >= 3);
+
+        const QString what = failureOf([&] { sim.addRegion({sim::circle({0.3, 0.3}, 0.1, 0.01)}); });
+        QVERIFY2(what.startsWith(QStringLiteral("the OpenCL device cannot hold")), qPrintable(what));
+        QVERIFY(!what.contains('\n'));
+    }
+
+    void badVertexCapIsNamed()
+    {
+        qputenv("VF_OPENCL_MAX_VERTICES", "lots");
+        const QString what = failureOf([] { sim::opencl::OpenClSimulation(test::rotation(1.0, 0.01, false), std::nullopt); });
+        qunsetenv("VF_OPENCL_MAX_VERTICES");
+        QVERIFY2(what.contains(QStringLiteral("VF_OPENCL_MAX_VERTICES='lots' is not a positive vertex count")),
+                 qPrintable(what));
     }
 
     void untranslatableExpressionIsNamed()
