@@ -65,11 +65,22 @@ void SimulationWorker::load(const model::Scene& scene, const model::EngineSettin
     m_script.emplace(scene);
     m_steps = 0;
     try {
-        build(settings, start ? start->wait().get() : nullptr);
-        if (!start) {
-            for (const model::RegionSpec& r : scene.regions)
-                m_simulation->addRegion(model::shapeContours(r.shape, settings.tracking.maxSpacing));
-            m_script->applyDrops(*m_simulation, -INFINITY, 0.0);  // drops at t = 0 are the starting picture
+        if (start) {
+            build(settings, start->wait().get());
+            return;
+        }
+        // The starting picture (the scene's regions and its drops at t = 0) is made on the
+        // reference backend and handed over as a state, so that build() can keep it there when the
+        // chosen device cannot hold it.
+        model::EngineSettings reference = settings;
+        reference.backend = QStringLiteral("reference");
+        build(reference, nullptr);
+        for (const model::RegionSpec& r : scene.regions)
+            m_simulation->addRegion(model::shapeContours(r.shape, settings.tracking.maxSpacing));
+        m_script->applyDrops(*m_simulation, -INFINITY, 0.0);
+        if (settings.backend != reference.backend) {
+            const sim::SimulationState picture = m_simulation->snapshot();
+            build(settings, &picture);
         }
     } catch (const std::exception& e) {
         m_simulation.reset();

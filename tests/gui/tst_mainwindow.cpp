@@ -127,6 +127,21 @@ private slots:
         QVERIFY2(glm::length(centre - sim::Vec2(0.75, 0.75)) < 0.01, "the drop landed where the click was");
     }
 
+    void aSceneTheDeviceCannotHoldRunsOnTheReferenceBackend()
+    {
+        MainWindow& w = *m_window;
+        QSignalSpy notices(&w.simulation(), &SimulationController::notice);
+        qputenv("VF_OPENCL_MAX_VERTICES", "64");  // a device too small for the scene's two hundred vertices
+        w.document().openScene(smallScene(), QStringLiteral("opencl"));
+        const Geometry g = geometry(w);
+        qunsetenv("VF_OPENCL_MAX_VERTICES");
+        QCOMPARE(QString::fromStdString(w.simulation().frame()->backend), QStringLiteral("reference"));
+        QCOMPARE(g.size(), std::size_t(2));
+        QTRY_VERIFY(!notices.isEmpty());
+        QVERIFY2(notices.front().front().toString().contains(QStringLiteral("reference backend")),
+                 qPrintable(notices.front().front().toString()));
+    }
+
     void stylusDragMovesInk()
     {
         MainWindow& w = *m_window;
