@@ -288,12 +288,23 @@ void MainWindow::createDocks()
 
 void MainWindow::createStatusBar()
 {
-    m_verticesLabel = new QLabel(this);
-    m_stepsLabel = new QLabel(this);
-    m_fpsLabel = new QLabel(this);
-    m_backendLabel = new QLabel(this);
-    for (QLabel* l : {m_verticesLabel, m_stepsLabel, m_fpsLabel, m_backendLabel})
-        statusBar()->addPermanentWidget(l);
+    // The figures change with every frame. Each label is as wide as its widest text from the
+    // start, so the status bar does not jitter and the window is not laid out again as they grow.
+    const struct {
+        QLabel*& label;
+        QString widest;
+    } labels[] = {
+        {m_verticesLabel, tr("%L1 vertices").arg(99'999'999)},
+        {m_stepsLabel, tr("%1 steps/s").arg(9999.9, 0, 'f', 1)},
+        {m_fpsLabel, tr("%1 fps").arg(999)},
+        {m_backendLabel, {}},
+    };
+    for (const auto& l : labels) {
+        l.label = new QLabel(this);
+        l.label->setMinimumWidth(l.label->fontMetrics().horizontalAdvance(l.widest));
+        l.label->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        statusBar()->addPermanentWidget(l.label);
+    }
     connect(m_canvas, &Canvas::displayFpsChanged, this, [this](int fps) { m_fpsLabel->setText(tr("%1 fps").arg(fps)); });
 }
 
