@@ -17,6 +17,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFontDialog>
 #include <QInputDialog>
 #include <QMenuBar>
 #include <QPushButton>
@@ -36,6 +37,7 @@ const QString recentKey = QStringLiteral("files/recent");
 const QString backendKey = QStringLiteral("simulation/backend");
 const QString deviceKey = QStringLiteral("simulation/device");
 const QString historyBudgetKey = QStringLiteral("history/budgetMB");
+const QString textFontKey = QStringLiteral("text/font");
 
 sim::Vec2 toVec(QPointF p)
 {
@@ -168,8 +170,23 @@ void MainWindow::createActions()
         if (c.isValid())
             setInkColor(c);
     });
+    auto* fontButton = new QPushButton(tr("Font…"), this);
+    fontButton->setObjectName(QStringLiteral("textFont"));
+    fontButton->setToolTip(tr("Typeface of the Text tool"));
+    connect(fontButton, &QPushButton::clicked, this, [this, fontButton] {
+        bool ok = false;
+        const QFont font = QFontDialog::getFont(&ok, m_textFont, this, tr("Text font"));
+        if (!ok)
+            return;
+        m_textFont = font;
+        fontButton->setText(font.family());
+        QSettings().setValue(textFontKey, font.toString());
+    });
+    if (const QString saved = QSettings().value(textFontKey).toString(); !saved.isEmpty() && m_textFont.fromString(saved))
+        fontButton->setText(m_textFont.family());
     tools->addSeparator();
     tools->addWidget(colorButton);
+    tools->addWidget(fontButton);
     setInkColor(m_inkColor);
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
