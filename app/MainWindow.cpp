@@ -62,6 +62,7 @@ MainWindow::MainWindow(QWidget* parent)
     , m_regionModel(m_document)
     , m_canvas(new Canvas(this))
 {
+    m_saves.setMaxThreadCount(1);
     m_ask = [this](const QString& title, const QString& text, QMessageBox::StandardButtons buttons) {
         return QMessageBox::question(this, title, text, buttons);
     };
@@ -82,6 +83,7 @@ MainWindow::~MainWindow()
 {
     // A save or autosave under way may wait for a state the worker has still to take: they end
     // first, while the worker runs. Then nothing of the document may call back into this window.
+    m_saves.waitForDone();
     QThreadPool::globalInstance()->waitForDone();
     delete m_recovery;
     m_recovery = nullptr;
@@ -451,23 +453,24 @@ bool MainWindow::recover()
 
 bool MainWindow::saveTo(const QString& path)
 {
-    const int index = m_document.undoStack().index();
-    return saved(path, m_opened, index, model::writeProjectFile(m_document.draftProject().finish(), path));
+    m_saves.waitForDone();  // an earlier save of an older draft must not land after this one
+    const std::uint64_t revision = m_document.revision();
+    return saved(path, m_opened, revision, model::writeProjectFile(m_document.draftProject().finish(), path));
 }
 
 void MainWindow::saveInBackground(const QString& path)
 {
     // The draft is the document now; waiting for its states and writing them run on a pool
     // thread, so the window stays live while a long history is written.
-    QThreadPool::globalInstance()->start([this, draft = m_document.draftProject(), path, opened = m_opened,
-                                          index = m_document.undoStack().index()] {
+    // One thread for saves, so that they land in the order they were made.
+    m_saves.start([this, draft = m_document.draftProject(), path, opened = m_opened, revision = m_document.revision()] {
         const QString error = model::writeProjectFile(draft.finish(), path);
-        QMetaObject::invokeMethod(this, [=, this] { saved(path, opened, index, error); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(this, [=, this] { saved(path, opened, revision, error); }, Qt::QueuedConnection);
     });
     statusBar()->showMessage(tr("Saving %1…").arg(QFileInfo(path).fileName()));
 }
 
-bool MainWindow::saved(const QString& path, int opened, int index, const QString& error)
+bool MainWindow::saved(const QString& path, int opened, std::uint64_t revision, const QString& error)
 {
     if (!error.isEmpty()) {
         m_report(tr("Cannot save"), error);
@@ -479,7 +482,7 @@ bool MainWindow::saved(const QString& path, int opened, int index, const QString
         return true;
     m_document.setFilePath(path);
     // Clean only if the history has not moved on while it was written.
-    if (m_document.undoStack().index() == index) {
+    if (m_document.revision() == revision) {
         m_document.undoStack().setClean();
         m_recovery->discard();
     }

@@ -11,6 +11,7 @@
 #include <QListView>
 #include <QMainWindow>
 #include <QMessageBox>
+#include <QThreadPool>
 #include <QUndoView>
 
 #include <functional>
@@ -74,7 +75,7 @@ private:
     bool save(SaveMode mode);
     bool saveAs(SaveMode mode);
     void saveInBackground(const QString& path);
-    bool saved(const QString& path, int opened, int index, const QString& error);
+    bool saved(const QString& path, int opened, std::uint64_t revision, const QString& error);
     void open();
     void exportPicture();
     void copySvg();
@@ -104,6 +105,7 @@ private:
     QLabel* m_stepsLabel = nullptr;
     QLabel* m_fpsLabel = nullptr;
     QLabel* m_backendLabel = nullptr;
+    QThreadPool m_saves;  // project saves, one at a time
     int m_opened = 0;  // counts documents opened, so a late save result finds its own
     QColor m_inkColor = QColor(0x1d, 0x35, 0x57);
     double m_stylusRadius = 0.03;

@@ -45,8 +45,11 @@ Recovery::Recovery(model::Document& document, QString directory, QObject* parent
 
 Recovery::~Recovery()
 {
-    // A background write reports back to this object: let it end first.
+    // A background write reports back to this object: let it end first. One begun before the last
+    // discard() (a clean exit) has no callback left to remove it, so it goes here.
     QThreadPool::globalInstance()->waitForDone();
+    if (m_writing > 0 && m_lastWriteGeneration != m_generation)
+        QFile::remove(filePath());
 }
 
 QString Recovery::filePath() const
@@ -68,7 +71,7 @@ void Recovery::saveNow()
     // still taking, so that and the writing run on a pool thread and the GUI never waits. A
     // discard() in the meantime makes the finished write stale: it is removed again.
     ++m_writing;
-    const int generation = m_generation;
+    const int generation = m_lastWriteGeneration = m_generation;
     QThreadPool::globalInstance()->start([this, draft = m_document.draftProject(), path = filePath(), generation] {
         const QString error = model::writeProjectFile(draft.finish(), path);
         QMetaObject::invokeMethod(this, [this, error, generation] {

@@ -49,6 +49,7 @@ private:
     bool m_crashed = false;
     int m_writing = 0;     // background writes under way
     int m_generation = 0;  // discard() counts up: a write begun before it is stale
+    int m_lastWriteGeneration = 0;
 };
 
 } // namespace vf::app

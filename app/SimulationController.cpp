@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 
 #include <future>
+#include <stdexcept>
 
 namespace vf::app {
 
@@ -37,6 +38,8 @@ void SimulationController::post(std::function<void(SimulationWorker&)> request)
             request(*worker);
         } catch (const std::exception& e) {  // e.g. the OpenCL device failed: never past the event loop
             worker->fail(e);
+        } catch (...) {
+            worker->fail(std::runtime_error("unexpected failure in the simulation"));
         }
         worker->requestDone();
     }, Qt::QueuedConnection);

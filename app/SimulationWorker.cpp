@@ -120,13 +120,17 @@ void SimulationWorker::snapshot(const model::StateSlotPtr& into)
 
 void SimulationWorker::restore(const model::StateSlotPtr& from)
 {
-    if (!m_simulation)
-        return;
     const model::StatePtr state = from->wait();
+    if (!m_simulation) {  // its load failed: the state brings the work back
+        build(m_settings, state.get());
+        return;
+    }
     try {
         m_simulation->restore(*state);
-    } catch (const std::invalid_argument&) {
-        build(m_settings, state.get());  // the device cannot hold it: build() moves to the reference backend
+    } catch (const std::exception&) {
+        // The device cannot hold it, or has failed: a new simulation takes the state, on the
+        // reference backend if need be (build()).
+        build(m_settings, state.get());
     }
 }
 
@@ -247,11 +251,20 @@ void SimulationWorker::offerFrame()
     frame->backend = m_backendLabel.toStdString();
     frame->playing = m_playing;
     if (m_simulation) {
-        frame->time = m_simulation->time();
-        frame->vertexCount = m_simulation->vertexCount();
-        frame->regions = m_simulation->regions();
-        if (m_velocityWanted)
-            frame->velocity = m_simulation->velocity();
+        try {
+            frame->time = m_simulation->time();
+            frame->vertexCount = m_simulation->vertexCount();
+            frame->regions = m_simulation->regions();
+            if (m_velocityWanted)
+                frame->velocity = m_simulation->velocity();
+        } catch (const std::exception& e) {  // a device that failed cannot be read back either
+            {
+                std::lock_guard lock(m_frameMutex);
+                m_dirty = false;
+            }
+            stopWith(firstLine(e.what()));
+            return;
+        }
     }
     {
         std::lock_guard lock(m_frameMutex);

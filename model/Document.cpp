@@ -38,6 +38,7 @@ Document::Document(SimulationPort& port, QObject* parent)
     : QObject(parent)
     , m_port(port)
 {
+    connect(&m_undo, &QUndoStack::indexChanged, this, [this] { ++m_revision; });
 }
 
 Document::~Document()
@@ -194,8 +195,10 @@ void Document::takeFrame(const Frame& frame)
 {
     // Only regions the scene's script has landed can appear unannounced; a frame from before the
     // last restore still shows the regions of the state that was replaced.
+    if (frame.serial < m_restoreSerial)
+        return;
     m_steps = m_stepsBefore + frame.steps;
-    if (frame.serial < m_restoreSerial || !m_script || frame.regions.size() <= m_regions.size())
+    if (!m_script || frame.regions.size() <= m_regions.size())
         return;
     RegionTable grown = m_regions;
     while (grown.size() < frame.regions.size() && grown.size() < m_script->looks().size()) {
@@ -348,6 +351,7 @@ void Document::setSettings(const EngineSettings& settings)
 void Document::reset()
 {
     pushSimulationCommand(tr("Reset"), [&] {
+        m_stepsBefore = m_steps;  // the worker counts from zero again
         m_port.load(m_scene, m_settings, nullptr);
         m_restoreSerial = m_port.requestCount();
         const RegionTable starting(m_script->looks().begin(), m_script->looks().begin() + m_script->startingRegionCount());
@@ -455,6 +459,7 @@ void Document::rebuildHistory(std::vector<std::shared_ptr<CommandRecord>> record
     }
     m_undo.setIndex(index);
     m_rebuilding = false;
+    ++m_revision;
 }
 
 } // namespace vf::model

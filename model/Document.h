@@ -65,6 +65,9 @@ public:
     QString filePath() const { return m_filePath; }
     void setFilePath(const QString& path);
     bool isModified() const { return !m_undo.isClean(); }
+    // Counts every move of the history (push, undo, redo, trimming): equal revisions mean the
+    // same commands are done, which an index alone cannot tell after undo and a new command.
+    std::uint64_t revision() const { return m_revision; }
 
     // False while drops of the scene's own script are still to land: a region added then would
     // take a simulation index that one of them is due to have.
@@ -134,6 +137,7 @@ private:
     // Steps taken: those of the project it was opened from and those the worker counts since.
     std::int64_t m_stepsBefore = 0;
     std::int64_t m_steps = 0;
+    std::uint64_t m_revision = 0;
     std::uint64_t m_restoreSerial = 0;  // frames older than the last restore or load are stale
     std::size_t m_historyBudget = defaultHistoryBudget;
     bool m_rebuilding = false;          // rebuildHistory() replays commands without applying them

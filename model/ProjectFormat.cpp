@@ -62,6 +62,18 @@ void checkRegionTables(const Project& project)
     }
 }
 
+void checkCommandEnds(const Project& project)
+{
+    const KeyPath top;
+    for (std::size_t i = 0; i < project.history.size(); ++i) {
+        const HistoryEntry& entry = project.history[i];
+        if (bool(entry.before) != bool(entry.after))
+            top.key(u"history"_s).index(qsizetype(i)).key(entry.before ? u"after"_s : u"before"_s)
+                .fail(u"null while %1 is a state: a command has states at both ends or at neither"_s
+                          .arg(entry.before ? u"before"_s : u"after"_s));
+    }
+}
+
 } // namespace projectformat
 
 QString checkProject(const Project& project)
@@ -83,6 +95,7 @@ QString checkProject(const Project& project)
             }
         }
         checkRegionTables(project);
+        checkCommandEnds(project);
         if (project.steps < 0 || project.steps > kMaxJsonInteger)
             top.key(u"steps"_s).fail(u"%1 is outside [0, %2]"_s.arg(project.steps).arg(kMaxJsonInteger));
         if (std::int64_t(project.history.size()) > kMaxHistory)

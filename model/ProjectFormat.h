@@ -31,4 +31,8 @@ inline constexpr std::int64_t kMaxJsonInteger = std::int64_t(1) << 53;
 // goes with. Throws json::ReadError at the table's key path.
 void checkRegionTables(const Project& project);
 
+// Each history entry has states at both ends (a command on the simulation) or at neither (a look
+// edit): undo and redo restore what is there. Throws json::ReadError at the null one's key path.
+void checkCommandEnds(const Project& project);
+
 } // namespace vf::model::projectformat

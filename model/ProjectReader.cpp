@@ -154,6 +154,7 @@ Project assemble(Manifest& m, QByteArrayView data)
         project.history.push_back(std::move(ref.entry));
     }
     checkRegionTables(project);
+    checkCommandEnds(project);
     return project;
 }
 

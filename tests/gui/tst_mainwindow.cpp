@@ -17,6 +17,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QXmlStreamReader>
@@ -287,6 +288,14 @@ private slots:
         QTRY_VERIFY(!w.document().isModified());
         QCOMPARE(model::readProjectFile(path).project.history.size(), std::size_t(1));
         QVERIFY(m_reports.isEmpty());
+
+        // The history moves on (undo, then a new command at the same index) before the save's
+        // result comes back: the document must stay unsaved.
+        QTest::keyClick(&w, Qt::Key_S, Qt::ControlModifier);
+        w.document().undoStack().undo();
+        w.document().drop({0.6, 0.4}, 0.05, Qt::red);
+        QTRY_COMPARE(w.statusBar()->currentMessage(), QStringLiteral("Saved background.vfproj"));
+        QVERIFY(w.document().isModified());
     }
 
     void savedWhileTheFlowRunsRedoesToTheSavedState()

@@ -481,6 +481,8 @@ private slots:
         row("negative sim index", setManifest(u"regions/1/sim_index"_s, -1), u"regions[1].sim_index: must be in [0, 99999], is -1"_s);
         row("sim index of a stateless entry", setManifest(u"history/1/regions_after/1/sim_index"_s, 2),
             u"history[1].regions_after[1].sim_index: 2 is outside the simulation's 2 regions"_s);
+        row("command with one end", setManifest(u"history/0/after"_s, QJsonValue::Null),
+            u"history[0].after: null while before is a state"_s);
         row("fractional steps", setManifest(u"steps"_s, 1.5), u"steps: must be a whole number, is 1.5"_s);
         row("history index", setManifest(u"history_index"_s, 5), u"history_index: 5 is past the 4 history entries"_s);
         row("state index", setManifest(u"history/3/after"_s, 9), u"history[3].after: state 9 does not exist (\"states\" lists 4)"_s);
