@@ -379,19 +379,9 @@ void MainWindow::showFrame()
 
 model::Drawing MainWindow::drawing() const
 {
-    model::Drawing d;
-    const model::Scene& scene = m_document.scene();
-    d.width = scene.canvas.width;
-    d.height = scene.canvas.height;
-    d.background = scene.canvas.background;
+    static const std::vector<std::vector<sim::Polygon>> nothingYet;
     const auto frame = m_simulation.frame();
-    for (const model::RegionLook& look : m_document.regions()) {
-        model::DrawnRegion region{look.name, look.color, look.visible, {}};
-        if (frame && look.simIndex < int(frame->regions.size()))
-            region.contours = frame->regions[look.simIndex];
-        d.regions.push_back(std::move(region));
-    }
-    return d;
+    return model::drawingOf(m_document.scene().canvas, m_document.regions(), frame ? frame->regions : nothingYet);
 }
 
 // ---- Files --------------------------------------------------------------------------------------------
@@ -635,7 +625,7 @@ void MainWindow::insertText(const QString& text, QPointF baselineStart)
     auto contours = model::textContours(text, m_textFont, toVec(baselineStart), em, m_document.settings().tracking.maxSpacing);
     if (contours.empty())
         return;
-    m_document.addRegions(tr("Text “%1”").arg(text), {{m_document.unusedName(text), m_inkColor, std::move(contours)}});
+    m_document.addRegions(tr("Text “%1”").arg(text), {{text, m_inkColor, std::move(contours)}});
 }
 
 void MainWindow::exportPicture()

@@ -53,14 +53,9 @@ sim::StepReport SceneRunner::step(double dt)
 
 Drawing SceneRunner::drawing() const
 {
-    Drawing d;
-    d.width = m_scene.canvas.width;
-    d.height = m_scene.canvas.height;
-    d.background = m_scene.canvas.background;
-    auto geometry = m_simulation->regions();
-    for (std::size_t i = 0; i < geometry.size(); ++i)
-        d.regions.push_back({m_script.looks()[i].name, m_script.looks()[i].color, m_script.looks()[i].visible, std::move(geometry[i])});
-    return d;
+    const auto geometry = m_simulation->regions();
+    const RegionTable landed(m_script.looks().begin(), m_script.looks().begin() + std::ptrdiff_t(geometry.size()));
+    return drawingOf(m_scene.canvas, landed, geometry);
 }
 
 } // namespace vf::model
