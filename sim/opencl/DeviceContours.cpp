@@ -141,7 +141,7 @@ struct DeviceContours::Impl {
     Grid grid() const;
     Motion flowMotion() const { return Motion{motionFlow, {{0.0f, 0.0f}}, 0.0f, cl_int(settings.timeRewinding)}; }
 
-    bool move(const FlowBinding& flow, const Motion& motion);
+    bool move(const FlowBinding& flow, const Motion& motion, bool startKnown = false);
     void computeSpacing(const FlowBinding& flow);
     void buildGrid(const Grid& grid);
     bool refine(const FlowBinding& flow, const Motion& motion);
@@ -178,6 +178,9 @@ struct DeviceContours::Impl {
     std::size_t capacity = 0, vertices = 0;
     std::size_t paddedCapacity = 0;  // entries of each per-vertex array (see reserve())
     VertexSet front, back;
+    // back.motion holds, as float2, the flow's velocity at every vertex that the last strain check
+    // sampled, until anything moves, adds or replaces vertices or uses the scratch.
+    bool strainSamplesKept = false;
     cl::Buffer tileOffset;  // uint per vertex: offset within its tile, from the counting kernels
     cl::Buffer work;        // uint per vertex: grid bucket counts, then starts; collapse actions
     cl::Buffer tileTotals;  // one acc4 per tile: uint, acc_t or acc4 totals, as the pass needs
@@ -323,12 +326,15 @@ Grid DeviceContours::Impl::grid() const
     return {cl_float(settings.proximityRadius()), (bits + 1) / 2, bits / 2};
 }
 
-bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion)
+bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, bool startKnown)
 {
+    startKnown = startKnown && strainSamplesKept && motion.kind == motionFlow;
+    strainSamplesKept = false;
     if (vertices == 0)
         return true;
     queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
-    launch(queue, advect, vertices, flow, motion, front.motion, cl_uint(vertices), status);
+    launch(queue, advect, vertices, flow, motion, front.motion, cl_uint(vertices), back.motion, cl_int(startKnown),
+           status);
     computeSpacing(flow);
     const bool withinBudget = refine(flow, motion);
     if (settings.areaCorrection)
@@ -582,6 +588,7 @@ DeviceContours::~DeviceContours() = default;
 void DeviceContours::addContour(int region, const Polygon& polygon)
 {
     guarded([&] {
+        m->strainSamplesKept = false;
         const Polygon points = resample(polygon, m->settings.maxSpacing);
         if (!m->reserve(std::max<std::size_t>(1, m->vertices + points.size())))  // allocates the scratch too
             throw DeviceError("the OpenCL device cannot hold " + std::to_string(m->vertices + points.size()) +
@@ -642,16 +649,17 @@ double DeviceContours::strainInSpacings(const FlowBinding& flow, double dt)
         cl::CommandQueue& q = m->queue;
         q.enqueueFillBuffer(m->status, cl_uint(0), statusStrain * sizeof(cl_uint), sizeof(cl_uint));
         launch(q, m->strain, m->vertices, flow, cl_float(dt), m->front.motion, m->front.spacing,
-               m->front.contour, m->contourOffset, m->contourCount, cl_uint(m->vertices), m->status);
+               m->front.contour, m->contourOffset, m->contourCount, cl_uint(m->vertices), m->back.motion, m->status);
+        m->strainSamplesKept = true;
         float worst = 0.0f;
         q.enqueueReadBuffer(m->status, CL_TRUE, statusStrain * sizeof(cl_uint), sizeof(float), &worst);
         return double(worst);
     });
 }
 
-bool DeviceContours::advect(const FlowBinding& flow)
+bool DeviceContours::advect(const FlowBinding& flow, bool startSampled)
 {
-    return guarded([&] { return m->move(flow, m->flowMotion()); });
+    return guarded([&] { return m->move(flow, m->flowMotion(), startSampled); });
 }
 
 bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
@@ -668,6 +676,7 @@ bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
 void DeviceContours::write(const std::vector<Contour>& contours)
 {
     guarded([&] {
+        m->strainSamplesKept = false;
         std::size_t total = 0;
         for (const Contour& c : contours)
             total += c.positions.size();

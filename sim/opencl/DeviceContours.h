@@ -30,10 +30,14 @@ public:
     double strainInSpacings(const FlowBinding& flow, double dt);
 
     // RK4 from flow.t0 to flow.t1 through `flow`, then spacing, refinement, area correction.
+    // `startSampled`: the caller's word that the flow at flow.t0 is the flow the last
+    // strainInSpacings() sampled (a step's first substep: the fluid's start field is a copy of the
+    // field the strain check saw). RK4's first stage then takes the strain check's samples, the
+    // same values, instead of sampling again, unless the contours changed since.
     // False when refinement stopped at max_vertices (or at what the device's memory holds); the
     // contours are then valid but may have edges longer than d_i. Throws std::runtime_error when
     // the flow moved a vertex to a non-finite position, DeviceError on a device failure.
-    bool advect(const FlowBinding& flow);
+    bool advect(const FlowBinding& flow, bool startSampled);
 
     // The drop's push P → C + (P−C)·sqrt(1 + r²/|P−C|²) as the motion, then refinement (split
     // vertices land on the pushed curve). `flow` at the end of its span feeds the spacing's

@@ -83,7 +83,9 @@ StepReport OpenClSimulation::step(double dt)
             }
             m_fluid->step(h);
         }
-        report.vertexLimitReached = !m_contours->advect(binding(m_time, m_time + h));
+        // The first substep starts where the strain check sampled: at m_time, the fluid's start field
+        // being a copy of the field it saw.
+        report.vertexLimitReached = !m_contours->advect(binding(m_time, m_time + h), k == 0);
         m_time += h;
     }
     m_pendingStylus.clear();

@@ -63,15 +63,20 @@ VF_INLINE float cross2(float2 a, float2 b)
     return a.x * b.y - a.y * b.x;
 }
 
-// Eq. 1: one classic fourth-order Runge–Kutta step over the flow's span [t0, t0 + dt].
-VF_INLINE float2 rungeKutta4(FLOW_PARAMS, float2 p)
+// Eq. 1: one classic fourth-order Runge–Kutta step over the flow's span [t0, t0 + dt], from the
+// velocity k1 at p at t0.
+VF_INLINE float2 rungeKutta4From(FLOW_PARAMS, float2 p, float2 k1)
 {
     const float h = 0.5f * dt;
-    const float2 k1 = flowVelocity(FLOW_PASS, p, 0.0f);
     const float2 k2 = flowVelocity(FLOW_PASS, p + h * k1, 0.5f);
     const float2 k3 = flowVelocity(FLOW_PASS, p + h * k2, 0.5f);
     const float2 k4 = flowVelocity(FLOW_PASS, p + dt * k3, 1.0f);
     return p + (dt / 6.0f) * (k1 + 2.0f * k2 + 2.0f * k3 + k4);
+}
+
+VF_INLINE float2 rungeKutta4(FLOW_PARAMS, float2 p)
+{
+    return rungeKutta4From(FLOW_PASS, p, flowVelocity(FLOW_PASS, p, 0.0f));
 }
 
 // The drop's push P → C + (P−C)·sqrt(1 + r²/|P−C|²), area-preserving outside the disc.
@@ -90,13 +95,17 @@ VF_INLINE float2 moved(FLOW_PARAMS, MOTION_ARGS, float2 start)
     return motionKind == MOTION_DROP ? dropPush(dropCentre, dropRadius, start) : rungeKutta4(FLOW_PASS, start);
 }
 
-VF_KERNEL void advect(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, uint n, __global uint *status)
+// With `startKnown` (a flow motion only), startVelocity[i] is the flow's velocity at vertex i at
+// t0, sampled by the strain check: RK4's first stage, bit for bit.
+VF_KERNEL void advect(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, uint n, __global const float2 *startVelocity,
+                      int startKnown, __global uint *status)
 {
     const uint i = get_global_id(0);
     if (i >= n)
         return;
     const float2 start = motion[i].xy;
-    const float2 p = moved(FLOW_PASS, MOTION_PASS, start);
+    const float2 p =
+        startKnown ? rungeKutta4From(FLOW_PASS, start, startVelocity[i]) : moved(FLOW_PASS, MOTION_PASS, start);
     if (!isfinite(p.x) || !isfinite(p.y))
         atomic_or(&status[STATUS_STICKY], FLAG_NON_FINITE);
     motion[i] = (float4)(p, start);
@@ -105,16 +114,18 @@ VF_KERNEL void advect(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, uint n, _
 VF_DEFINE_LOCAL_REDUCE(float, maxFloat, fmax)
 
 // Largest |u(v_b) − u(v_a)|·stepLength / d_e over the edges (ContourTracker::strainInSpacings),
-// with the flow at the end of its span. Each vertex samples the flow once; the next vertex's
-// velocity comes from its neighbour in the work-group, sampled again only across a tile or a
-// contour's closing edge.
+// with the flow at the end of its span. Each vertex samples the flow once, and leaves the sample
+// in velocityAt for the advection's first stage; the next vertex's velocity comes from its
+// neighbour in the work-group, sampled again only across a tile or a contour's closing edge.
 VF_KERNEL void strain(FLOW_ARGS, float stepLength, __global const float4 *motion, __global const float *spacing,
-                      CONTOUR_ARGS, uint n, __global uint *status)
+                      CONTOUR_ARGS, uint n, __global float2 *velocityAt, __global uint *status)
 {
     __local float2 velocity[VF_LOCAL];
     __local float scratch[VF_SCAN_SCRATCH];
     const uint i = get_global_id(0), lid = get_local_id(0);
     const float2 u = i < n ? flowVelocity(FLOW_PASS, motion[i].xy, 1.0f) : (float2)(0.0f);
+    if (i < n)
+        velocityAt[i] = u;
     velocity[lid] = u;
     barrier(CLK_LOCAL_MEM_FENCE);
     float s = 0.0f;
