@@ -53,6 +53,7 @@ void SimulationWorker::build(const model::EngineSettings& settings, const sim::S
         }
     }
     m_simulation = std::move(simulation);
+    m_copying.reset();
     m_settings = settings;
     m_backendLabel = backendLabel(*m_simulation);
     if (!fallback.isEmpty())
@@ -84,6 +85,7 @@ void SimulationWorker::load(const model::Scene& scene, const model::EngineSettin
         }
     } catch (const std::exception& e) {
         m_simulation.reset();
+        m_copying.reset();
         stopWith(firstLine(e.what()));
     }
 }
@@ -127,6 +129,7 @@ void SimulationWorker::restore(const model::StateSlotPtr& from)
     }
     try {
         m_simulation->restore(*state);
+        m_copying.reset();  // restore() dropped the copy
     } catch (const std::exception&) {
         // The device cannot hold it, or has failed: a new simulation takes the state, on the
         // reference backend if need be (build()).
@@ -235,13 +238,46 @@ void SimulationWorker::requestDone()
     offerFrame();
 }
 
+// A frame is made in two halves. The first takes everything but the geometry as it is now and
+// asks the simulation for a copy of the geometry (Simulation::requestRegions); the second, once
+// the copy is complete, adds it and hands the frame out. While playing, the next step runs in
+// between (on OpenCL the copy completes behind the queued work instead of stalling it); paused,
+// nothing would, so the second half waits for the copy at once.
 void SimulationWorker::offerFrame()
 {
     {
         std::lock_guard lock(m_frameMutex);
-        if (m_frameOut || !m_dirty)
+        if (m_frameOut || (!m_copying && !m_dirty))
             return;
     }
+    try {
+        if (!m_copying)
+            startFrame();
+        if (m_simulation) {
+            std::optional<sim::RegionsCopy> copy = m_simulation->takeRegions(!m_playing);
+            if (!copy)
+                return;  // still copying: the next step offers again
+            if (copy->request != m_copyRequest) {  // not the copy this frame asked for: start over
+                m_copying.reset();
+                return;
+            }
+            m_copying->regions = std::move(copy->regions);
+        }
+    } catch (const std::exception& e) {  // a device that failed cannot be read back either
+        m_copying.reset();
+        stopWith(firstLine(e.what()));
+        return;
+    }
+    {
+        std::lock_guard lock(m_frameMutex);
+        m_frame = std::move(m_copying);
+        m_frameOut = true;
+    }
+    emit frameReady();
+}
+
+void SimulationWorker::startFrame()
+{
     auto frame = std::make_shared<model::Frame>();
     frame->serial = m_handled;
     frame->steps = m_steps;
@@ -250,29 +286,18 @@ void SimulationWorker::offerFrame()
     frame->stepsPerSecond = m_playing ? m_stepsPerSecond : 0.0;
     frame->backend = m_backendLabel.toStdString();
     frame->playing = m_playing;
-    if (m_simulation) {
-        try {
-            frame->time = m_simulation->time();
-            frame->vertexCount = m_simulation->vertexCount();
-            frame->regions = m_simulation->regions();
-            if (m_velocityWanted)
-                frame->velocity = m_simulation->velocity();
-        } catch (const std::exception& e) {  // a device that failed cannot be read back either
-            {
-                std::lock_guard lock(m_frameMutex);
-                m_dirty = false;
-            }
-            stopWith(firstLine(e.what()));
-            return;
-        }
-    }
     {
         std::lock_guard lock(m_frameMutex);
-        m_frame = std::move(frame);
-        m_frameOut = true;
         m_dirty = false;
     }
-    emit frameReady();
+    if (m_simulation) {
+        frame->time = m_simulation->time();
+        frame->vertexCount = m_simulation->vertexCount();
+        if (m_velocityWanted)
+            frame->velocity = m_simulation->velocity();
+        m_copyRequest = m_simulation->requestRegions();
+    }
+    m_copying = std::move(frame);
 }
 
 std::shared_ptr<const model::Frame> SimulationWorker::takeFrame()

@@ -60,6 +60,7 @@ private:
     void step();
     void scheduleStep();
     void offerFrame();
+    void startFrame();
     void stopWith(const QString& message);
 
     std::unique_ptr<sim::Simulation> m_simulation;
@@ -77,6 +78,10 @@ private:
     double m_stepsPerSecond = 0.0;
     int m_stepsInWindow = 0;
     qint64 m_windowStart = 0;
+
+    // The frame whose geometry is being copied (offerFrame), and the copy's request number.
+    std::shared_ptr<model::Frame> m_copying;
+    std::uint64_t m_copyRequest = 0;
 
     std::mutex m_frameMutex;       // guards the three below
     std::shared_ptr<const model::Frame> m_frame;  // made, not yet taken

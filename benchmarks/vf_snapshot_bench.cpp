@@ -1,9 +1,15 @@
-// vf_snapshot_bench: what the app's undo history pays per entry. Simulation::snapshot() and
-// restore() at about 100k and 1M vertices on every backend, in the scene of vf_bench (BenchScene.h)
-// with the pen's next move given but not yet stepped. Each iteration takes a snapshot and restores
-// it into the same simulation, as undo and redo do; both are timed in wall time (the OpenCL
-// backend's are blocking transfers). docs/BENCHMARKS.md has the figures, the machine and the
-// command. A benchmark, run on demand, never a test.
+// vf_snapshot_bench: what the app's undo history pays per entry, and the worker per frame, at
+// about 100k and 1M vertices on every backend, in the scene of vf_bench (BenchScene.h) with the
+// pen's next move given but not yet stepped.
+//   SnapshotRestore: each iteration takes Simulation::snapshot() and restores it into the same
+//     simulation, as undo and redo do; both are timed in wall time (the OpenCL backend's are
+//     blocking transfers).
+//   FrameGeometry: a frame's geometry three ways, in wall time: regions() (blocking, every field
+//     read back), requestRegions() and takeRegions(true) back to back, and the worker's way while
+//     playing: request, a step, take (only the two calls are timed; the copy completes behind
+//     the step).
+// docs/BENCHMARKS.md has the figures, the machine and the command. A benchmark, run on demand,
+// never a test.
 #include "BenchScene.h"
 
 #include <benchmark/benchmark.h>
@@ -11,6 +17,7 @@
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -23,7 +30,10 @@ double secondsSince(Clock::time_point start)
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-void snapshotRestoreBenchmark(benchmark::State& state, const Backend& backend, std::int64_t target)
+// The benchmark scene, settled, with the pen's next move given; null (and the benchmark skipped)
+// without an OpenCL device for that backend.
+std::unique_ptr<sim::Simulation> settledScene(benchmark::State& state, const Backend& backend, std::int64_t target,
+                                              int& step)
 {
     const Layout layout = layoutFor(target);
     std::unique_ptr<sim::Simulation> simulation;
@@ -31,9 +41,8 @@ void snapshotRestoreBenchmark(benchmark::State& state, const Backend& backend, s
         simulation = backend.make(settingsFor(layout));
     } catch (const sim::opencl::DeviceError& e) {
         state.SkipWithError((std::string("OpenCL backend skipped: ") + e.what()).c_str());
-        return;
+        return nullptr;
     }
-    int step = 0;
     const auto stir = [&] { simulation->stylus(penAt(step), penAt(step + 1), kPenRadius, kDt); ++step; };
     for (int k = 0; k < kStirSteps; ++k) {
         stir();
@@ -46,7 +55,15 @@ void snapshotRestoreBenchmark(benchmark::State& state, const Backend& backend, s
         simulation->step(kDt);
     }
     stir();  // pending: a snapshot carries it
+    return simulation;
+}
 
+void snapshotRestoreBenchmark(benchmark::State& state, const Backend& backend, std::int64_t target)
+{
+    int step = 0;
+    const std::unique_ptr<sim::Simulation> simulation = settledScene(state, backend, target, step);
+    if (!simulation)
+        return;
     double snapshotSeconds = 0.0, restoreSeconds = 0.0, bytes = 0.0;
     for (auto _ : state) {
         auto start = Clock::now();
@@ -69,6 +86,43 @@ void snapshotRestoreBenchmark(benchmark::State& state, const Backend& backend, s
     state.counters["B_per_vertex"] = bytes / vertices;
 }
 
+void frameGeometryBenchmark(benchmark::State& state, const Backend& backend, std::int64_t target)
+{
+    int step = 0;
+    const std::unique_ptr<sim::Simulation> simulation = settledScene(state, backend, target, step);
+    if (!simulation)
+        return;
+    double blocking = 0.0, backToBack = 0.0, overlapped = 0.0;
+    for (auto _ : state) {
+        auto start = Clock::now();
+        benchmark::DoNotOptimize(simulation->regions());
+        blocking += secondsSince(start);
+
+        start = Clock::now();
+        simulation->requestRegions();
+        benchmark::DoNotOptimize(simulation->takeRegions(true));
+        const double copied = secondsSince(start);
+        backToBack += copied;
+
+        start = Clock::now();
+        simulation->requestRegions();
+        double calls = secondsSince(start);
+        simulation->step(kDt);
+        simulation->stylus(penAt(step), penAt(step + 1), kPenRadius, kDt);
+        ++step;
+        start = Clock::now();
+        benchmark::DoNotOptimize(simulation->takeRegions(false));
+        calls += secondsSince(start);
+        overlapped += calls;
+        state.SetIterationTime(copied);
+    }
+    const double iterations = double(state.iterations());
+    state.counters["vertices"] = double(simulation->vertexCount());
+    state.counters["ms_regions_blocking"] = 1e3 * blocking / iterations;
+    state.counters["ms_copy_back_to_back"] = 1e3 * backToBack / iterations;
+    state.counters["ms_copy_behind_a_step"] = 1e3 * overlapped / iterations;
+}
+
 struct Size {
     std::int64_t vertices;
     int iterations;
@@ -79,14 +133,16 @@ constexpr Size kSizes[] = {{100'000, 20}, {1'000'000, 5}};
 
 int main(int argc, char** argv)
 {
-    for (const Backend& b : backends())
-        for (const Size& s : kSizes)
-            benchmark::RegisterBenchmark(("SnapshotRestore/" + std::string(b.name) + "/" + std::to_string(s.vertices))
-                                             .c_str(),
-                                         snapshotRestoreBenchmark, b, s.vertices)
-                ->Unit(benchmark::kMillisecond)
-                ->Iterations(s.iterations)
-                ->UseManualTime();
+    using Function = void (*)(benchmark::State&, const Backend&, std::int64_t);
+    for (const auto& [family, function] : {std::pair<const char*, Function>{"SnapshotRestore/", snapshotRestoreBenchmark},
+                                           std::pair<const char*, Function>{"FrameGeometry/", frameGeometryBenchmark}})
+        for (const Backend& b : backends())
+            for (const Size& s : kSizes)
+                benchmark::RegisterBenchmark((family + std::string(b.name) + "/" + std::to_string(s.vertices)).c_str(),
+                                             function, b, s.vertices)
+                    ->Unit(benchmark::kMillisecond)
+                    ->Iterations(s.iterations)
+                    ->UseManualTime();
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
         return 1;

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace vf::sim {
 
@@ -81,6 +82,18 @@ void ReferenceSimulation::restore(const SimulationState& state)
     m_flow->setTime(state.time);
     m_tracker.setContours(state.contours);
     m_regionCount = state.regionCount;
+    m_regionsCopy.reset();
+}
+
+std::uint64_t ReferenceSimulation::requestRegions()
+{
+    m_regionsCopy = RegionsCopy{++m_regionsRequests, regions()};
+    return m_regionsRequests;
+}
+
+std::optional<RegionsCopy> ReferenceSimulation::takeRegions(bool)
+{
+    return std::exchange(m_regionsCopy, std::nullopt);
 }
 
 StepReport ReferenceSimulation::step(double dt)

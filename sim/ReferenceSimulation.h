@@ -24,6 +24,8 @@ public:
     std::size_t vertexCount() const override { return m_tracker.vertexCount(); }
     int regionCount() const override { return m_regionCount; }
     std::vector<Contour> contours() const override { return m_tracker.contours(); }
+    std::uint64_t requestRegions() override;
+    std::optional<RegionsCopy> takeRegions(bool wait) override;
     std::optional<MacVelocity> velocity() const override;
     SimulationState snapshot() const override;
     void restore(const SimulationState& state) override;
@@ -39,6 +41,8 @@ private:
     ContourTracker m_tracker;
     std::vector<StylusSegment> m_pendingStylus;
     int m_regionCount = 0;
+    std::uint64_t m_regionsRequests = 0;
+    std::optional<RegionsCopy> m_regionsCopy;  // requested, not yet taken
 };
 
 } // namespace vf::sim

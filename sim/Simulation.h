@@ -6,6 +6,7 @@
 #include "sim/SimulationState.h"
 #include "sim/Tracking.h"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,6 +25,12 @@ struct SimulationSettings {
 struct StepReport {
     bool vertexLimitReached = false;  // refinement stopped at tracking.maxVertices
     int substeps = 1;
+};
+
+// Every region's contours at one moment, for a display (Simulation::requestRegions).
+struct RegionsCopy {
+    std::uint64_t request = 0;                   // requestRegions()'s number for it
+    std::vector<std::vector<Polygon>> regions;   // indexed by region, as regions()
 };
 
 struct DropReport {
@@ -61,6 +68,15 @@ public:
 
     // Every region's contours, indexed by region.
     std::vector<std::vector<Polygon>> regions() const;
+    // The same for a display, without waiting on the step: requestRegions() starts a copy of every
+    // region's contours as they are now and returns its number (1, 2, ...); takeRegions() returns
+    // the newest requested copy that is complete, each at most once, or nothing yet (with `wait`,
+    // it waits for the newest request's copy). The OpenCL backend reads positions only, enqueued
+    // behind the work already queued and double-buffered, so the next step runs while it
+    // completes; the reference backend copies at once. restore() drops the copies requested
+    // before it.
+    virtual std::uint64_t requestRegions() = 0;
+    virtual std::optional<RegionsCopy> takeRegions(bool wait = false) = 0;
     // The fluid's velocity now (for the app's velocity overlay); none for an analytic flow.
     // Blocking on OpenCL (a readback of the grid).
     virtual std::optional<MacVelocity> velocity() const = 0;

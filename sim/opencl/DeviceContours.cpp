@@ -83,15 +83,24 @@ struct VertexSet {
     cl::Buffer contour;  // uint contour index
 };
 
-// Geometry copied from the device, for read() and the asynchronous readback.
+// Geometry copied from the device for read(): every field.
 struct Snapshot {
     std::vector<cl_float4> motion;
     std::vector<float> spacing;
     std::vector<cl_uint> offset, count;
     std::vector<int> regions;
     std::vector<double> targets;
-    cl::Event done;         // the last of the copies
-    std::size_t serial = 0; // which request filled it; 0: none
+    cl::Event done;  // the last of the copies
+};
+
+// Positions copied from the device for a display (requestRead), and where each contour lies.
+struct Outlines {
+    std::vector<cl_float2> positions;
+    std::vector<cl_uint> offset, count;
+    std::vector<int> regions;  // each contour's
+    int regionCount = 0;
+    cl::Event done;              // the last of the copies
+    std::uint64_t serial = 0;    // which request filled it; 0: none
     bool taken = true;
 };
 
@@ -162,6 +171,7 @@ struct DeviceContours::Impl {
     void correctAreas();
     void enqueueSnapshot(Snapshot& s);
     std::vector<Contour> toContours(const Snapshot& s) const;
+    void enqueueOutlines(Outlines& s);
 
     Device& device;
     cl::CommandQueue& queue;
@@ -170,7 +180,7 @@ struct DeviceContours::Impl {
     const std::size_t accSize;
     const std::optional<std::size_t> vertexCap;  // VF_OPENCL_MAX_VERTICES
     Scan countScan, sumScan;
-    cl::Kernel advect, strain, arcTilesAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
+    cl::Kernel advect, strain, positionsOf, arcTilesAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
         splitCount, splitScatter, recountContours, collapseDecide, collapseScatter, recentreInPlace,
         markActiveTilesKernel, contourTermTiles, contourTermSums, correctArea;
 
@@ -202,8 +212,8 @@ struct DeviceContours::Impl {
     cl::Buffer status;   // statusWords uint
     int smoothingRadius;
 
-    std::array<Snapshot, 2> staging;
-    std::size_t requests = 0;
+    std::array<Outlines, 2> staging;
+    std::uint64_t requests = 0;
 };
 
 DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, const std::string& flowSource)
@@ -226,6 +236,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
     const cl::Program program = device.build(source, "contours.cl", options);
     for (auto [kernel, name] : {std::pair{&advect, "advect"},
                                 {&strain, "strain"},
+                                {&positionsOf, "positionsOf"},
                                 {&arcTilesAndCount, "arcTilesAndCount"},
                                 {&gridScatter, "gridScatter"},
                                 {&nearestOtherPart, "nearestOtherPart"},
@@ -558,6 +569,26 @@ void DeviceContours::Impl::enqueueSnapshot(Snapshot& s)
     queue.enqueueReadBuffer(contourCount, CL_FALSE, 0, contours * sizeof(cl_uint), s.count.data(), nullptr, &s.done);
 }
 
+// The positions go through the scratch vertex set, packed to 8 bytes a vertex; the in-order queue
+// runs the copy before any later command writes there.
+void DeviceContours::Impl::enqueueOutlines(Outlines& s)
+{
+    const std::size_t contours = regions.size();
+    s.positions.resize(vertices);
+    s.offset.resize(contours);
+    s.count.resize(contours);
+    s.regions = regions;
+    if (contours == 0)
+        return;
+    if (vertices > 0) {
+        strainSamplesKept = false;
+        launch(queue, positionsOf, vertices, front.motion, cl_uint(vertices), back.motion);
+        queue.enqueueReadBuffer(back.motion, CL_FALSE, 0, vertices * sizeof(cl_float2), s.positions.data());
+    }
+    queue.enqueueReadBuffer(contourOffset, CL_FALSE, 0, contours * sizeof(cl_uint), s.offset.data());
+    queue.enqueueReadBuffer(contourCount, CL_FALSE, 0, contours * sizeof(cl_uint), s.count.data(), nullptr, &s.done);
+}
+
 std::vector<Contour> DeviceContours::Impl::toContours(const Snapshot& s) const
 {
     std::vector<Contour> contours(s.regions.size());
@@ -722,7 +753,7 @@ void DeviceContours::write(const std::vector<Contour>& contours)
         m->regions = std::move(regions);
         m->targets = std::move(targets);
         m->vertices = total;
-        for (Snapshot& staged : m->staging)
+        for (Outlines& staged : m->staging)
             staged.taken = true;
     });
 }
@@ -748,34 +779,43 @@ std::vector<Contour> DeviceContours::read() const
     });
 }
 
-void DeviceContours::requestRead()
+std::uint64_t DeviceContours::requestRead(int regionCount)
 {
-    guarded([&] {
-        Snapshot& s = m->staging[m->requests % 2];
+    return guarded([&] {
+        Outlines& s = m->staging[m->requests % 2];
         if (s.done())
             s.done.wait();  // still being filled from two requests ago
         s.done = cl::Event();
-        m->enqueueSnapshot(s);
+        m->enqueueOutlines(s);
+        s.regionCount = regionCount;
         s.serial = ++m->requests;
         s.taken = false;
         m->queue.flush();
+        return s.serial;
     });
 }
 
-std::optional<std::vector<Contour>> DeviceContours::takeRead(bool wait)
+std::optional<RegionsCopy> DeviceContours::takeRead(bool wait)
 {
-    return guarded([&]() -> std::optional<std::vector<Contour>> {
-        Snapshot* newest = &m->staging[0];
-        Snapshot* older = &m->staging[1];
+    return guarded([&]() -> std::optional<RegionsCopy> {
+        Outlines* newest = &m->staging[0];
+        Outlines* older = &m->staging[1];
         if (older->serial > newest->serial)
             std::swap(newest, older);
         if (wait && !newest->taken && newest->done())
             newest->done.wait();
-        for (Snapshot* s : {newest, older}) {
+        for (Outlines* s : {newest, older}) {
             if (s->taken || (s->done() && !isComplete(s->done)))
                 continue;
             newest->taken = older->taken = true;  // an older copy is superseded by a newer one
-            return m->toContours(*s);
+            RegionsCopy copy{s->serial, std::vector<std::vector<Polygon>>(std::size_t(s->regionCount))};
+            for (std::size_t c = 0; c < s->regions.size(); ++c) {
+                Polygon& out = copy.regions.at(std::size_t(s->regions[c])).emplace_back();
+                out.reserve(s->count[c]);
+                for (std::size_t i = s->offset[c]; i < s->offset[c] + s->count[c]; ++i)
+                    out.emplace_back(s->positions[i].s[0], s->positions[i].s[1]);
+            }
+            return copy;
         }
         return std::nullopt;
     });

@@ -3,10 +3,12 @@
 // (eq. 1), adaptive spacing (eqs. 3–7) with a counting-sort proximity grid and Gaussian smoothing
 // along contours, refinement by the time-rewinding split (eq. 2) and collapse, kept contiguous
 // and ordered by stream compaction, the optional area correction, and ink drops.
+#include "sim/Simulation.h"
 #include "sim/Tracking.h"
 #include "sim/opencl/Device.h"
 #include "sim/opencl/FlowBinding.h"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -59,14 +61,16 @@ public:
     // (a test and diagnostic knob; a value that is not a positive count is a DeviceError).
     std::size_t deviceVertexLimit() const;
 
-    // The app's readback, asynchronous and double-buffered: requestRead() enqueues non-blocking
-    // copies of the geometry as it is now into one of two host staging buffers and returns at
-    // once (steps may be enqueued right behind it); takeRead() returns the newest requested
-    // geometry whose copy has completed, each at most once, or nothing when none is ready yet
-    // (with `wait`, it waits for the newest one instead). A request whose buffer is still being
-    // filled from two requests ago waits for that copy first.
-    void requestRead();
-    std::optional<std::vector<Contour>> takeRead(bool wait = false);
+    // The app's readback (Simulation::requestRegions), asynchronous and double-buffered:
+    // requestRead() packs the positions as they are now into the scratch vertex set and enqueues
+    // a non-blocking copy of them (8 bytes a vertex) into one of two host staging buffers, and
+    // returns the request's number at once (steps may be enqueued right behind it: the queue is
+    // in order); takeRead() returns the newest requested copy that has completed, grouped into
+    // `regionCount` regions, each at most once, or nothing when none is ready yet (with `wait`,
+    // it waits for the newest one instead). A request whose buffer is still being filled from two
+    // requests ago waits for that copy first.
+    std::uint64_t requestRead(int regionCount);
+    std::optional<RegionsCopy> takeRead(bool wait = false);
 
     // Bytes of device memory per vertex of capacity, all buffers that scale with vertices.
     static std::size_t bytesPerVertex();

@@ -31,6 +31,8 @@ public:
     std::size_t vertexCount() const override { return m_contours->vertexCount(); }
     int regionCount() const override { return m_regionCount; }
     std::vector<Contour> contours() const override { return m_contours->read(); }
+    std::uint64_t requestRegions() override { return m_contours->requestRead(m_regionCount); }
+    std::optional<RegionsCopy> takeRegions(bool wait) override { return m_contours->takeRead(wait); }
     std::optional<MacVelocity> velocity() const override;
     SimulationState snapshot() const override;
     void restore(const SimulationState& state) override;

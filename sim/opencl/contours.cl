@@ -111,6 +111,14 @@ VF_KERNEL void advect(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, uint n, _
     motion[i] = (float4)(p, start);
 }
 
+// The positions alone, packed for a display's readback (DeviceContours::requestRead).
+VF_KERNEL void positionsOf(__global const float4 *motion, uint n, __global float2 *positions)
+{
+    const uint i = get_global_id(0);
+    if (i < n)
+        positions[i] = motion[i].xy;
+}
+
 VF_DEFINE_LOCAL_REDUCE(float, maxFloat, fmax)
 
 // Largest |u(v_b) − u(v_a)|·stepLength / d_e over the edges (ContourTracker::strainInSpacings),

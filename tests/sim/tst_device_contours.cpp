@@ -520,20 +520,30 @@ void TestDeviceContours::asynchronousReadIsDoubleBuffered()
 {
     Pair pair(*m_device, FlowId::SingleVortex, tracking(1.0 / 128, true), false);
     pair.add(0, sim::circle({0.5, 0.75}, 0.15, 1.0 / 128));
+    pair.add(2, sim::circle({0.5, 0.4}, 0.1, 1.0 / 128));
     DeviceContours& device = pair.device();
     QVERIFY(!device.takeRead());
     pair.step(0.02);
     const auto first = device.read();
-    device.requestRead();
+    QCOMPARE(device.requestRead(3), std::uint64_t(1));
     pair.step(0.02);
     const auto second = device.read();
-    device.requestRead();
+    QCOMPARE(device.requestRead(3), std::uint64_t(2));
     pair.step(0.02);  // enqueued behind both copies
     const auto taken = device.takeRead(true);
     QVERIFY(taken);
-    QVERIFY((*taken)[0].positions == second[0].positions);  // the newest request
-    QVERIFY(!device.takeRead(true));                         // each at most once, the older one superseded
+    QCOMPARE(taken->request, std::uint64_t(2));  // the newest request
+    QCOMPARE(taken->regions.size(), std::size_t(3));
+    QVERIFY(taken->regions[1].empty());
+    QCOMPARE(taken->regions[0].size(), std::size_t(1));
+    QVERIFY(taken->regions[0][0] == second[0].positions);
+    QVERIFY(taken->regions[2][0] == second[1].positions);
+    QVERIFY(!device.takeRead(true));  // each at most once, the older one superseded
     QVERIFY(first[0].positions != second[0].positions);
+    // A restore drops the copies requested before it.
+    device.requestRead(3);
+    device.write(second);
+    QVERIFY(!device.takeRead(true));
 }
 
 QTEST_APPLESS_MAIN(TestDeviceContours)

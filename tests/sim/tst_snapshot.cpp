@@ -192,6 +192,9 @@ private slots:
     void statePastTheVertexLimitRestores_data() { test::addBackendRows(); }
     void statePastTheVertexLimitRestores();
 
+    void regionsCopyIsItsMoment_data() { test::addBackendRows(); }
+    void regionsCopyIsItsMoment();
+
     void invalidStateIsRefused_data();
     void invalidStateIsRefused();
 };
@@ -408,6 +411,41 @@ void TestSnapshot::otherFlowStartsAtRest()
     const SimulationState back = fluid->snapshot();
     QVERIFY(back.fluid && atRest(*back.fluid));
     QVERIFY(back.contours == stirred.contours);
+}
+
+// requestRegions()/takeRegions(), the app's frames: a copy shows the geometry of the moment it
+// was requested, also when a step has run since; the newest request wins and each copy is taken
+// once; restore() drops the copies requested before it.
+void TestSnapshot::regionsCopyIsItsMoment()
+{
+    QFETCH(QString, backend);
+    VF_REQUIRE_BACKEND(backend);
+    auto simulation = stirredScene(backend, fluidSettings());
+    QVERIFY(!simulation->takeRegions(true));
+    const auto before = simulation->regions();
+    const std::uint64_t first = simulation->requestRegions();
+    advance(*simulation, 1);
+    const auto after = simulation->regions();
+    QVERIFY(after != before);
+    std::optional<sim::RegionsCopy> copy = simulation->takeRegions(true);
+    QVERIFY(copy);
+    QCOMPARE(copy->request, first);
+    QVERIFY(copy->regions == before);
+    QVERIFY(!simulation->takeRegions(true));
+
+    simulation->requestRegions();
+    const std::uint64_t newest = simulation->requestRegions();
+    QVERIFY(newest > first);
+    copy = simulation->takeRegions(true);
+    QVERIFY(copy);
+    QCOMPARE(copy->request, newest);
+    QVERIFY(copy->regions == after);
+    QVERIFY(!simulation->takeRegions(true));  // the older request is superseded
+
+    const SimulationState state = simulation->snapshot();
+    simulation->requestRegions();
+    simulation->restore(state);
+    QVERIFY(!simulation->takeRegions(true));
 }
 
 void TestSnapshot::invalidStateIsRefused_data()
