@@ -240,9 +240,9 @@ void SimulationWorker::requestDone()
 
 // A frame is made in two halves. The first takes everything but the geometry as it is now and
 // asks the simulation for a copy of the geometry (Simulation::requestRegions); the second, once
-// the copy is complete, adds it and hands the frame out. While playing, the next step runs in
-// between (on OpenCL the copy completes behind the queued work instead of stalling it); paused,
-// nothing would, so the second half waits for the copy at once.
+// the copy is complete, adds it and hands the frame out. While playing, the next step is enqueued
+// in between, so this thread does not wait for the copy (on OpenCL the device makes it before the
+// step's kernels); paused, nothing would come in between, so the second half waits for it at once.
 void SimulationWorker::offerFrame()
 {
     {
@@ -255,6 +255,10 @@ void SimulationWorker::offerFrame()
             startFrame();
         if (m_simulation) {
             std::optional<sim::RegionsCopy> copy = m_simulation->takeRegions(!m_playing);
+            if (!copy && !m_playing) {  // the copy was dropped (a restore that failed): take the present
+                startFrame();
+                copy = m_simulation->takeRegions(true);
+            }
             if (!copy)
                 return;  // still copying: the next step offers again
             if (copy->request != m_copyRequest) {  // not the copy this frame asked for: start over

@@ -104,9 +104,13 @@ struct Outlines {
     bool taken = true;
 };
 
+// True once the command is done; a command that failed is a device failure.
 bool isComplete(const cl::Event& event)
 {
-    return event.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() <= CL_COMPLETE;
+    const cl_int status = event.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>();
+    if (status < 0)
+        throw cl::Error(status, "a readback failed");
+    return status == CL_COMPLETE;
 }
 
 // VF_OPENCL_MAX_VERTICES, a test and diagnostic knob: the device holds at most this many vertices,
@@ -140,6 +144,8 @@ auto guarded(F&& f) -> decltype(f())
 
 struct DeviceContours::Impl {
     Impl(Device& device, const TrackingSettings& settings, const std::string& flowSource);
+    // Copies into the staging buffers may still be running: they finish before the buffers go.
+    ~Impl();
 
     cl::Buffer buffer(std::size_t bytes) const { return cl::Buffer(device.context(), CL_MEM_READ_WRITE, bytes); }
     VertexSet vertexSet(std::size_t size) const;
@@ -609,6 +615,14 @@ std::vector<Contour> DeviceContours::Impl::toContours(const Snapshot& s) const
     return contours;
 }
 
+DeviceContours::Impl::~Impl()
+{
+    try {
+        queue.finish();
+    } catch (const cl::Error&) {  // a failed device has nothing running any more
+    }
+}
+
 DeviceContours::DeviceContours(Device& device, const TrackingSettings& settings, const std::string& flowSource)
     : m(guarded([&] { return std::make_unique<Impl>(device, settings, flowSource); }))
 {
@@ -616,27 +630,35 @@ DeviceContours::DeviceContours(Device& device, const TrackingSettings& settings,
 
 DeviceContours::~DeviceContours() = default;
 
-void DeviceContours::addContour(int region, const Polygon& polygon)
+void DeviceContours::addRegion(int region, const std::vector<Polygon>& polygons)
 {
     guarded([&] {
         m->strainSamplesKept = false;
-        const Polygon points = resample(polygon, m->settings.maxSpacing);
-        if (!m->reserve(std::max<std::size_t>(1, m->vertices + points.size())))  // allocates the scratch too
-            throw DeviceError("the OpenCL device cannot hold " + std::to_string(m->vertices + points.size()) +
-                              " contour vertices");
-        const std::size_t c = m->regions.size();
-        m->reserveContours(c + 1);
+        std::vector<Polygon> resampled;
+        std::size_t total = m->vertices;
+        for (const Polygon& p : polygons)
+            total += resampled.emplace_back(resample(p, m->settings.maxSpacing)).size();
+        // All or nothing: a region is never left with some of its contours.
+        if (!m->reserve(std::max<std::size_t>(1, total)))  // allocates the scratch too
+            throw DeviceError("the OpenCL device cannot hold " + std::to_string(total) + " contour vertices");
+        m->reserveContours(m->regions.size() + resampled.size());
         std::vector<cl_float4> motion;
-        for (const Vec2& p : points)
-            motion.push_back({{cl_float(p.x), cl_float(p.y), cl_float(p.x), cl_float(p.y)}});
-        const std::vector<float> spacing(points.size(), float(m->settings.maxSpacing));
-        const std::vector<cl_uint> contour(points.size(), cl_uint(c));
-        const std::size_t at = m->vertices;
-        const std::array<cl_uint, 2> range{cl_uint(at), cl_uint(points.size())};
-        const double target = signedArea(points);
-        const float targetFloat = float(target);
+        std::vector<cl_uint> contour, offset, count;
+        std::vector<double> targets;
+        for (const Polygon& points : resampled) {
+            offset.push_back(cl_uint(m->vertices + motion.size()));
+            count.push_back(cl_uint(points.size()));
+            targets.push_back(signedArea(points));
+            for (const Vec2& p : points) {
+                motion.push_back({{cl_float(p.x), cl_float(p.y), cl_float(p.x), cl_float(p.y)}});
+                contour.push_back(cl_uint(m->regions.size() + offset.size() - 1));
+            }
+        }
+        const std::vector<float> spacing(motion.size(), float(m->settings.maxSpacing));
+        const std::vector<float> targetFloats(targets.begin(), targets.end());
+        const std::size_t at = m->vertices, c = m->regions.size();
         cl::CommandQueue& q = m->queue;
-        if (!points.empty()) {
+        if (!motion.empty()) {
             q.enqueueWriteBuffer(m->front.motion, CL_FALSE, at * sizeof(cl_float4), motion.size() * sizeof(cl_float4),
                                  motion.data());
             q.enqueueWriteBuffer(m->front.spacing, CL_FALSE, at * sizeof(float), spacing.size() * sizeof(float),
@@ -644,14 +666,19 @@ void DeviceContours::addContour(int region, const Polygon& polygon)
             q.enqueueWriteBuffer(m->front.contour, CL_FALSE, at * sizeof(cl_uint), contour.size() * sizeof(cl_uint),
                                  contour.data());
         }
-        q.enqueueWriteBuffer(m->contourOffset, CL_FALSE, c * sizeof(cl_uint), sizeof(cl_uint), &range[0]);
-        q.enqueueWriteBuffer(m->contourCount, CL_FALSE, c * sizeof(cl_uint), sizeof(cl_uint), &range[1]);
-        q.enqueueWriteBuffer(m->contourTarget, CL_FALSE, c * m->accSize, m->accSize,
-                             m->fp64 ? static_cast<const void*>(&target) : static_cast<const void*>(&targetFloat));
+        if (!resampled.empty()) {
+            q.enqueueWriteBuffer(m->contourOffset, CL_FALSE, c * sizeof(cl_uint), offset.size() * sizeof(cl_uint),
+                                 offset.data());
+            q.enqueueWriteBuffer(m->contourCount, CL_FALSE, c * sizeof(cl_uint), count.size() * sizeof(cl_uint),
+                                 count.data());
+            q.enqueueWriteBuffer(m->contourTarget, CL_FALSE, c * m->accSize, targets.size() * m->accSize,
+                                 m->fp64 ? static_cast<const void*>(targets.data())
+                                         : static_cast<const void*>(targetFloats.data()));
+        }
         q.finish();  // the host vectors above go out of scope
-        m->regions.push_back(region);
-        m->targets.push_back(target);
-        m->vertices += points.size();
+        m->regions.insert(m->regions.end(), resampled.size(), region);
+        m->targets.insert(m->targets.end(), targets.begin(), targets.end());
+        m->vertices = total;
     });
 }
 
@@ -785,6 +812,7 @@ std::uint64_t DeviceContours::requestRead(int regionCount)
         Outlines& s = m->staging[m->requests % 2];
         if (s.done())
             s.done.wait();  // still being filled from two requests ago
+        s.taken = true;     // until the new copy is enqueued whole
         s.done = cl::Event();
         m->enqueueOutlines(s);
         s.regionCount = regionCount;

@@ -23,8 +23,9 @@ public:
     DeviceContours(Device& device, const TrackingSettings& settings, const std::string& flowSource);
     ~DeviceContours();
 
-    // As ContourTracker::addContour (resampled so no edge exceeds d_max; area target set).
-    void addContour(int region, const Polygon& polygon);
+    // As ContourTracker::addContour for each polygon (resampled so no edge exceeds d_max; area
+    // targets set), all or none: when the device cannot hold them, nothing is added.
+    void addRegion(int region, const std::vector<Polygon>& polygons);
     void growTargetAreasAround(Vec2 p, double area);
 
     // As ContourTracker::strainInSpacings for a step of dt, with the flow at the end of `flow`'s

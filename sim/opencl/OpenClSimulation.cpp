@@ -53,8 +53,7 @@ FlowBinding OpenClSimulation::binding(double t0, double t1) const
 
 int OpenClSimulation::addRegion(const std::vector<Polygon>& contours)
 {
-    for (const Polygon& p : contours)
-        m_contours->addContour(m_regionCount, p);
+    m_contours->addRegion(m_regionCount, contours);
     return m_regionCount++;
 }
 

@@ -101,7 +101,7 @@ public:
 
     void add(int region, const Polygon& p)
     {
-        m_contours.addContour(region, p);
+        m_contours.addRegion(region, {p});
         if (m_withReference)
             m_tracker.addContour(region, p);
     }

@@ -81,6 +81,29 @@ private slots:
         QVERIFY(!what.contains('\n'));
     }
 
+    // A region whose contours the device cannot all hold is not added at all: no contour of it is
+    // left behind (its region index would not exist), and the simulation goes on as before.
+    void regionPastTheLimitIsNotAddedInPart()
+    {
+        qputenv("VF_OPENCL_MAX_VERTICES", "150");
+        sim::opencl::OpenClSimulation sim(test::rotation(1.0, 0.01, false), std::nullopt);
+        qunsetenv("VF_OPENCL_MAX_VERTICES");
+        sim.addRegion({sim::circle({0.5, 0.5}, 0.05, 0.01)});  // about 32 vertices
+        const sim::SimulationState before = sim.snapshot();
+        const QString what = failureOf([&] {
+            sim.addRegion({sim::circle({0.3, 0.3}, 0.05, 0.01), sim::circle({0.7, 0.7}, 0.15, 0.01)});  // 32 + 95
+        });
+        QVERIFY2(what.startsWith(QStringLiteral("the OpenCL device cannot hold")), qPrintable(what));
+        QCOMPARE(sim.regionCount(), 1);
+        QVERIFY(sim.snapshot() == before);
+        sim.requestRegions();
+        const auto copy = sim.takeRegions(true);
+        QVERIFY(copy);
+        QCOMPARE(copy->regions.size(), std::size_t(1));
+        sim.step(0.02);
+        QCOMPARE(sim.regionCount(), 1);
+    }
+
     void badVertexCapIsNamed()
     {
         qputenv("VF_OPENCL_MAX_VERTICES", "lots");
