@@ -72,8 +72,8 @@ public:
     // region's contours as they are now and returns its number (1, 2, ...); takeRegions() returns
     // the newest requested copy that is complete, each at most once, or nothing yet (with `wait`,
     // it waits for the newest request's copy). The OpenCL backend reads positions only, enqueued
-    // behind the work already queued and double-buffered, so the next step runs while it
-    // completes; the reference backend copies at once. restore() drops the copies requested
+    // behind the work already queued and double-buffered, so the caller can go on to the next
+    // step without waiting for it; the reference backend copies at once. restore() drops the copies requested
     // before it.
     virtual std::uint64_t requestRegions() = 0;
     virtual std::optional<RegionsCopy> takeRegions(bool wait = false) = 0;
