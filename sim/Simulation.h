@@ -73,8 +73,8 @@ public:
     // the newest requested copy that is complete, each at most once, or nothing yet (with `wait`,
     // it waits for the newest request's copy). The OpenCL backend reads positions only, enqueued
     // behind the work already queued and double-buffered, so the caller can go on to the next
-    // step without waiting for it; the reference backend copies at once. restore() drops the copies requested
-    // before it.
+    // step without waiting for it; the reference backend copies at once. restore() drops the
+    // copies requested before it.
     virtual std::uint64_t requestRegions() = 0;
     virtual std::optional<RegionsCopy> takeRegions(bool wait = false) = 0;
     // The fluid's velocity now (for the app's velocity overlay); none for an analytic flow.
