@@ -178,6 +178,7 @@ struct DeviceContours::Impl {
     void enqueueSnapshot(Snapshot& s);
     std::vector<Contour> toContours(const Snapshot& s) const;
     void enqueueOutlines(Outlines& s);
+    void place(const std::vector<Contour>& contours, std::size_t firstVertex, std::size_t firstContour);
 
     Device& device;
     cl::CommandQueue& queue;
@@ -615,6 +616,61 @@ std::vector<Contour> DeviceContours::Impl::toContours(const Snapshot& s) const
     return contours;
 }
 
+// Uploads `contours` as the store's contours from index `firstContour` on, their vertices from
+// `firstVertex` on, in order, replacing whatever came after; all or nothing: when the device
+// cannot hold them, nothing changes.
+void DeviceContours::Impl::place(const std::vector<Contour>& contours, std::size_t firstVertex,
+                                 std::size_t firstContour)
+{
+    std::size_t total = firstVertex;
+    for (const Contour& c : contours)
+        total += c.positions.size();
+    if (!reserve(std::max<std::size_t>(1, total)))  // allocates the scratch too
+        throw DeviceError("the OpenCL device cannot hold " + std::to_string(total) + " contour vertices");
+    reserveContours(firstContour + contours.size());
+    strainSamplesKept = false;
+    std::vector<cl_float4> motion;
+    std::vector<float> spacing;
+    std::vector<cl_uint> contour, offset, count;
+    std::vector<double> areas;  // the contours' area targets
+    motion.reserve(total - firstVertex);
+    spacing.reserve(total - firstVertex);
+    contour.reserve(total - firstVertex);
+    for (const Contour& c : contours) {
+        offset.push_back(cl_uint(firstVertex + motion.size()));
+        count.push_back(cl_uint(c.positions.size()));
+        for (std::size_t i = 0; i < c.positions.size(); ++i) {
+            const Vec2 p = c.positions[i], q = c.previous[i];
+            motion.push_back({{cl_float(p.x), cl_float(p.y), cl_float(q.x), cl_float(q.y)}});
+            spacing.push_back(float(c.spacing[i]));
+            contour.push_back(cl_uint(firstContour + offset.size() - 1));
+        }
+        areas.push_back(c.targetArea);
+    }
+    const std::vector<float> areaFloats(areas.begin(), areas.end());
+    const auto put = [this](const cl::Buffer& buffer, std::size_t first, const auto& values) {
+        if (!values.empty())
+            queue.enqueueWriteBuffer(buffer, CL_FALSE, first * sizeof(values[0]), values.size() * sizeof(values[0]),
+                                     values.data());
+    };
+    put(front.motion, firstVertex, motion);
+    put(front.spacing, firstVertex, spacing);
+    put(front.contour, firstVertex, contour);
+    put(contourOffset, firstContour, offset);
+    put(contourCount, firstContour, count);
+    if (fp64)
+        put(contourTarget, firstContour, areas);
+    else
+        put(contourTarget, firstContour, areaFloats);
+    queue.finish();  // the host vectors above go out of scope
+    regions.resize(firstContour);
+    targets.resize(firstContour);
+    for (const Contour& c : contours)
+        regions.push_back(c.region);
+    targets.insert(targets.end(), areas.begin(), areas.end());
+    vertices = total;
+}
+
 DeviceContours::Impl::~Impl()
 {
     try {
@@ -633,52 +689,15 @@ DeviceContours::~DeviceContours() = default;
 void DeviceContours::addRegion(int region, const std::vector<Polygon>& polygons)
 {
     guarded([&] {
-        m->strainSamplesKept = false;
-        std::vector<Polygon> resampled;
-        std::size_t total = m->vertices;
-        for (const Polygon& p : polygons)
-            total += resampled.emplace_back(resample(p, m->settings.maxSpacing)).size();
-        // All or nothing: a region is never left with some of its contours.
-        if (!m->reserve(std::max<std::size_t>(1, total)))  // allocates the scratch too
-            throw DeviceError("the OpenCL device cannot hold " + std::to_string(total) + " contour vertices");
-        m->reserveContours(m->regions.size() + resampled.size());
-        std::vector<cl_float4> motion;
-        std::vector<cl_uint> contour, offset, count;
-        std::vector<double> targets;
-        for (const Polygon& points : resampled) {
-            offset.push_back(cl_uint(m->vertices + motion.size()));
-            count.push_back(cl_uint(points.size()));
-            targets.push_back(signedArea(points));
-            for (const Vec2& p : points) {
-                motion.push_back({{cl_float(p.x), cl_float(p.y), cl_float(p.x), cl_float(p.y)}});
-                contour.push_back(cl_uint(m->regions.size() + offset.size() - 1));
-            }
+        std::vector<Contour> contours;
+        for (const Polygon& polygon : polygons) {
+            Contour& c = contours.emplace_back();
+            c.region = region;
+            c.positions = c.previous = resample(polygon, m->settings.maxSpacing);
+            c.spacing.assign(c.positions.size(), m->settings.maxSpacing);
+            c.targetArea = signedArea(c.positions);
         }
-        const std::vector<float> spacing(motion.size(), float(m->settings.maxSpacing));
-        const std::vector<float> targetFloats(targets.begin(), targets.end());
-        const std::size_t at = m->vertices, c = m->regions.size();
-        cl::CommandQueue& q = m->queue;
-        if (!motion.empty()) {
-            q.enqueueWriteBuffer(m->front.motion, CL_FALSE, at * sizeof(cl_float4), motion.size() * sizeof(cl_float4),
-                                 motion.data());
-            q.enqueueWriteBuffer(m->front.spacing, CL_FALSE, at * sizeof(float), spacing.size() * sizeof(float),
-                                 spacing.data());
-            q.enqueueWriteBuffer(m->front.contour, CL_FALSE, at * sizeof(cl_uint), contour.size() * sizeof(cl_uint),
-                                 contour.data());
-        }
-        if (!resampled.empty()) {
-            q.enqueueWriteBuffer(m->contourOffset, CL_FALSE, c * sizeof(cl_uint), offset.size() * sizeof(cl_uint),
-                                 offset.data());
-            q.enqueueWriteBuffer(m->contourCount, CL_FALSE, c * sizeof(cl_uint), count.size() * sizeof(cl_uint),
-                                 count.data());
-            q.enqueueWriteBuffer(m->contourTarget, CL_FALSE, c * m->accSize, targets.size() * m->accSize,
-                                 m->fp64 ? static_cast<const void*>(targets.data())
-                                         : static_cast<const void*>(targetFloats.data()));
-        }
-        q.finish();  // the host vectors above go out of scope
-        m->regions.insert(m->regions.end(), resampled.size(), region);
-        m->targets.insert(m->targets.end(), targets.begin(), targets.end());
-        m->vertices = total;
+        m->place(contours, m->vertices, m->regions.size());
     });
 }
 
@@ -734,52 +753,7 @@ bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
 void DeviceContours::write(const std::vector<Contour>& contours)
 {
     guarded([&] {
-        m->strainSamplesKept = false;
-        std::size_t total = 0;
-        for (const Contour& c : contours)
-            total += c.positions.size();
-        if (!m->reserve(std::max<std::size_t>(1, total)))
-            throw DeviceError("the OpenCL device cannot hold " + std::to_string(total) + " contour vertices");
-        m->reserveContours(contours.size());
-        std::vector<cl_float4> motion;
-        std::vector<float> spacing;
-        std::vector<cl_uint> contour, offset, count;
-        std::vector<int> regions;
-        std::vector<double> targets;
-        motion.reserve(total);
-        spacing.reserve(total);
-        contour.reserve(total);
-        for (const Contour& c : contours) {
-            offset.push_back(cl_uint(motion.size()));
-            count.push_back(cl_uint(c.positions.size()));
-            for (std::size_t i = 0; i < c.positions.size(); ++i) {
-                const Vec2 p = c.positions[i], q = c.previous[i];
-                motion.push_back({{cl_float(p.x), cl_float(p.y), cl_float(q.x), cl_float(q.y)}});
-                spacing.push_back(float(c.spacing[i]));
-                contour.push_back(cl_uint(offset.size() - 1));
-            }
-            regions.push_back(c.region);
-            targets.push_back(c.targetArea);
-        }
-        const std::vector<float> targetFloats(targets.begin(), targets.end());
-        cl::CommandQueue& q = m->queue;
-        const auto put = [&q](const cl::Buffer& buffer, const auto& values) {
-            if (!values.empty())
-                q.enqueueWriteBuffer(buffer, CL_FALSE, 0, values.size() * sizeof(values[0]), values.data());
-        };
-        put(m->front.motion, motion);
-        put(m->front.spacing, spacing);
-        put(m->front.contour, contour);
-        put(m->contourOffset, offset);
-        put(m->contourCount, count);
-        if (m->fp64)
-            put(m->contourTarget, targets);
-        else
-            put(m->contourTarget, targetFloats);
-        q.finish();  // the host vectors above go out of scope
-        m->regions = std::move(regions);
-        m->targets = std::move(targets);
-        m->vertices = total;
+        m->place(contours, 0, 0);
         for (Outlines& staged : m->staging)
             staged.taken = true;
     });
