@@ -14,6 +14,7 @@
 // The scene: the default 64×64 fluid, stirred by a pen that circles the canvas centre at a steady
 // speed, first alone (so the flow is already moving) and then with a lattice of small ink circles
 // whose total vertex count is about N. Adaptive spacing and proximity are on (the defaults).
+#include "BenchMain.h"
 #include "BenchScene.h"
 
 #include "sim/ContourTracker.h"
@@ -442,10 +443,5 @@ void registerAll()
 int main(int argc, char** argv)
 {
     registerAll();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv))
-        return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return vf::bench::runRegisteredBenchmarks(argc, argv);
 }

@@ -9,6 +9,7 @@
 //     and takeRegions(), the worker's way while playing; also request and take back to back.
 // docs/BENCHMARKS.md has the figures, the machine and the command. A benchmark, run on demand,
 // never a test.
+#include "BenchMain.h"
 #include "BenchScene.h"
 
 #include <benchmark/benchmark.h>
@@ -148,10 +149,5 @@ int main(int argc, char** argv)
                     ->Unit(benchmark::kMillisecond)
                     ->Iterations(s.iterations)
                     ->UseManualTime();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv))
-        return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return vf::bench::runRegisteredBenchmarks(argc, argv);
 }
