@@ -230,7 +230,7 @@ void bareRk4KernelBenchmark(benchmark::State& state, std::int64_t target)
         queue.finish();
         state.ResumeTiming();
         const auto start = Clock::now();
-        launch(queue, advect, std::size_t(n), fluid.binding(time - kDt, time), motionFlow, noCentre, cl_float(0),
+        launch(queue, advect, laneGroups(n), fluid.binding(time - kDt, time), motionFlow, noCentre, cl_float(0),
                rewind, points, n, points, cl_int(0), status);
         queue.finish();
         seconds += std::chrono::duration<double>(Clock::now() - start).count();

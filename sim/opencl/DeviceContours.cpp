@@ -351,7 +351,7 @@ bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, b
     if (vertices == 0)
         return true;
     queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
-    launch(queue, advect, vertices, flow, motion, front.motion, cl_uint(vertices), back.motion, cl_int(startKnown),
+    launch(queue, advect, laneGroups(vertices), flow, motion, front.motion, cl_uint(vertices), back.motion, cl_int(startKnown),
            status);
     computeSpacing(flow);
     const bool withinBudget = refine(flow, motion);
@@ -725,7 +725,7 @@ double DeviceContours::strainInSpacings(const FlowBinding& flow, double dt)
             return 0.0;
         cl::CommandQueue& q = m->queue;
         q.enqueueFillBuffer(m->status, cl_uint(0), statusStrain * sizeof(cl_uint), sizeof(cl_uint));
-        launch(q, m->strain, m->vertices, flow, cl_float(dt), m->front.motion, m->front.spacing,
+        launch(q, m->strain, laneGroups(m->vertices), flow, cl_float(dt), m->front.motion, m->front.spacing,
                m->front.contour, m->contourOffset, m->contourCount, cl_uint(m->vertices), m->back.motion, m->status);
         m->strainSamplesKept = true;
         float worst = 0.0f;

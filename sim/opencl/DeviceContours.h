@@ -18,7 +18,8 @@ namespace vf::sim::opencl {
 
 class DeviceContours {
 public:
-    // `flowSource` is the OpenCL C that defines flowVelocity/flowVorticity (FlowBinding.h).
+    // `flowSource` is the OpenCL C that defines flowVelocity, flowVelocityLanes and flowVorticity
+    // (FlowBinding.h); flow.h.cl comes before it.
     // Throws DeviceError.
     DeviceContours(Device& device, const TrackingSettings& settings, const std::string& flowSource);
     ~DeviceContours();

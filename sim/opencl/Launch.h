@@ -11,6 +11,14 @@ namespace vf::sim::opencl {
 
 inline constexpr std::size_t localSize = 64;
 
+// The lane kernels (advect, strain) take this many vertices per work-item: VF_LANES of flow.h.cl.
+inline constexpr std::size_t lanes = 8;
+
+inline std::size_t laneGroups(std::size_t vertices)
+{
+    return (vertices + lanes - 1) / lanes;
+}
+
 inline std::size_t roundUpToLocal(std::size_t items)
 {
     return (items + localSize - 1) / localSize * localSize;

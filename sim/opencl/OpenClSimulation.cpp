@@ -14,11 +14,10 @@ bool isFluid(const SimulationSettings& s)
 
 std::string flowSource(const SimulationSettings& s)
 {
-    const std::string header = joinedKernelSources({"flow.h.cl"});
     if (isFluid(s))
-        return header + joinedKernelSources({"flow_fluid.cl"});
+        return joinedKernelSources({"flow_fluid.cl"});
     try {
-        return header + analyticFlowSource(s.u, s.v);
+        return analyticFlowSource(s.u, s.v);
     } catch (const UnsupportedExpression& e) {
         throw DeviceError(e.what());
     }

@@ -63,20 +63,37 @@ VF_INLINE float cross2(float2 a, float2 b)
     return a.x * b.y - a.y * b.x;
 }
 
-// Eq. 1: one classic fourth-order Runge–Kutta step over the flow's span [t0, t0 + dt], from the
-// velocity k1 at p at t0.
-VF_INLINE float2 rungeKutta4From(FLOW_PARAMS, float2 p, float2 k1)
+// The one-point sampler in the shape of the lane sampler, for the Runge–Kutta template below.
+VF_INLINE void flowVelocityOne(FLOW_PARAMS, float x, float y, float s, float *u, float *v)
 {
-    const float h = 0.5f * dt;
-    const float2 k2 = flowVelocity(FLOW_PASS, p + h * k1, 0.5f);
-    const float2 k3 = flowVelocity(FLOW_PASS, p + h * k2, 0.5f);
-    const float2 k4 = flowVelocity(FLOW_PASS, p + dt * k3, 1.0f);
-    return p + (dt / 6.0f) * (k1 + 2.0f * k2 + 2.0f * k3 + k4);
+    const float2 w = flowVelocity(FLOW_PASS, (float2)(x, y), s);
+    *u = w.x;
+    *v = w.y;
 }
+
+// Eq. 1: one classic fourth-order Runge–Kutta step over the flow's span [t0, t0 + dt] from (x, y),
+// whose velocity at t0 is k1; written once for one point (float, One) and for lanes (floatv,
+// Lanes).
+#define VF_DEFINE_RUNGE_KUTTA4(T, S)                                                           \
+    VF_INLINE void rungeKutta4From##S(FLOW_PARAMS, T x, T y, T k1x, T k1y, T *endX, T *endY)   \
+    {                                                                                          \
+        const float h = 0.5f * dt;                                                             \
+        T k2x, k2y, k3x, k3y, k4x, k4y;                                                        \
+        flowVelocity##S(FLOW_PASS, x + h * k1x, y + h * k1y, 0.5f, &k2x, &k2y);                \
+        flowVelocity##S(FLOW_PASS, x + h * k2x, y + h * k2y, 0.5f, &k3x, &k3y);                \
+        flowVelocity##S(FLOW_PASS, x + dt * k3x, y + dt * k3y, 1.0f, &k4x, &k4y);              \
+        *endX = x + (dt / 6.0f) * (k1x + 2.0f * k2x + 2.0f * k3x + k4x);                       \
+        *endY = y + (dt / 6.0f) * (k1y + 2.0f * k2y + 2.0f * k3y + k4y);                       \
+    }
+VF_DEFINE_RUNGE_KUTTA4(float, One)
+VF_DEFINE_RUNGE_KUTTA4(floatv, Lanes)
 
 VF_INLINE float2 rungeKutta4(FLOW_PARAMS, float2 p)
 {
-    return rungeKutta4From(FLOW_PASS, p, flowVelocity(FLOW_PASS, p, 0.0f));
+    float k1x, k1y, x, y;
+    flowVelocityOne(FLOW_PASS, p.x, p.y, 0.0f, &k1x, &k1y);
+    rungeKutta4FromOne(FLOW_PASS, p.x, p.y, k1x, k1y, &x, &y);
+    return (float2)(x, y);
 }
 
 // The drop's push P → C + (P−C)·sqrt(1 + r²/|P−C|²), area-preserving outside the disc.
@@ -95,20 +112,84 @@ VF_INLINE float2 moved(FLOW_PARAMS, MOTION_ARGS, float2 start)
     return motionKind == MOTION_DROP ? dropPush(dropCentre, dropRadius, start) : rungeKutta4(FLOW_PASS, start);
 }
 
-// With `startKnown` (a flow motion only), startVelocity[i] is the flow's velocity at vertex i at
-// t0, sampled by the strain check: RK4's first stage, bit for bit.
+// Work-item g's lanes hold vertices VF_LANES·g + k (k < VF_LANES); those past the last vertex repeat
+// it, and what they compute is dropped.
+VF_INLINE uint laneVertex(uint g, int k, uint n)
+{
+    return min(VF_LANES * g + (uint)k, n - 1);
+}
+
+// The first two floats of each lane's record in an array of 2 or 4 floats per vertex. A whole
+// group of lanes is one or two wide loads (VF_LANES is 8).
+VF_INLINE void lanesOf(__global const float *records, uint stride, uint g, uint n, floatv *x, floatv *y)
+{
+    __global const float *group = records + stride * VF_LANES * g;
+    if (VF_LANES * g + VF_LANES <= n && stride == 4) {
+        const float16 a = vload16(0, group), b = vload16(1, group);
+        *x = (floatv)(a.s048c, b.s048c);
+        *y = (floatv)(a.s159d, b.s159d);
+        return;
+    }
+    if (VF_LANES * g + VF_LANES <= n && stride == 2) {
+        const float16 a = vload16(0, group);
+        *x = a.even;
+        *y = a.odd;
+        return;
+    }
+    float xs[VF_LANES], ys[VF_LANES];
+    for (int k = 0; k < VF_LANES; ++k) {
+        const uint at = stride * laneVertex(g, k, n);
+        xs[k] = records[at];
+        ys[k] = records[at + 1];
+    }
+    *x = VF_VLOAD(0, xs);
+    *y = VF_VLOAD(0, ys);
+}
+
+// Launched over one work-item per VF_LANES vertices. With `startKnown` (a flow motion only),
+// startVelocity[i] is the flow's velocity at vertex i at t0, sampled by the strain check: RK4's
+// first stage, bit for bit.
 VF_KERNEL void advect(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, uint n, __global const float2 *startVelocity,
                       int startKnown, __global uint *status)
 {
-    const uint i = get_global_id(0);
-    if (i >= n)
+    const uint g = get_global_id(0);
+    if (VF_LANES * g >= n)
         return;
-    const float2 start = motion[i].xy;
-    const float2 p =
-        startKnown ? rungeKutta4From(FLOW_PASS, start, startVelocity[i]) : moved(FLOW_PASS, MOTION_PASS, start);
-    if (!isfinite(p.x) || !isfinite(p.y))
-        atomic_or(&status[STATUS_STICKY], FLAG_NON_FINITE);
-    motion[i] = (float4)(p, start);
+    floatv x, y;
+    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
+    floatv endX = x, endY = y;
+    if (motionKind == MOTION_FLOW) {
+        floatv k1x, k1y;
+        if (startKnown)
+            lanesOf((__global const float *)startVelocity, 2, g, n, &k1x, &k1y);
+        else
+            flowVelocityLanes(FLOW_PASS, x, y, 0.0f, &k1x, &k1y);
+        rungeKutta4FromLanes(FLOW_PASS, x, y, k1x, k1y, &endX, &endY);
+    }
+    __global float4 *group = motion + VF_LANES * g;
+    if (VF_LANES * g + VF_LANES <= n && motionKind == MOTION_FLOW) {
+        if (!all(isfinite(endX) & isfinite(endY)))
+            atomic_or(&status[STATUS_STICKY], FLAG_NON_FINITE);
+        vstore16((float16)(endX.s0, endY.s0, x.s0, y.s0, endX.s1, endY.s1, x.s1, y.s1,
+                           endX.s2, endY.s2, x.s2, y.s2, endX.s3, endY.s3, x.s3, y.s3), 0, (__global float *)group);
+        vstore16((float16)(endX.s4, endY.s4, x.s4, y.s4, endX.s5, endY.s5, x.s5, y.s5,
+                           endX.s6, endY.s6, x.s6, y.s6, endX.s7, endY.s7, x.s7, y.s7), 1, (__global float *)group);
+        return;
+    }
+    // The last group, or a drop (whose push stays one vertex at a time).
+    float xs[VF_LANES], ys[VF_LANES], ends[2][VF_LANES];
+    VF_VSTORE(x, 0, xs);
+    VF_VSTORE(y, 0, ys);
+    VF_VSTORE(endX, 0, ends[0]);
+    VF_VSTORE(endY, 0, ends[1]);
+    for (int k = 0; k < VF_LANES && VF_LANES * g + k < n; ++k) {
+        const float2 start = (float2)(xs[k], ys[k]);
+        const float2 p = motionKind == MOTION_DROP ? dropPush(dropCentre, dropRadius, start)
+                                                   : (float2)(ends[0][k], ends[1][k]);
+        if (!isfinite(p.x) || !isfinite(p.y))
+            atomic_or(&status[STATUS_STICKY], FLAG_NON_FINITE);
+        group[k] = (float4)(p, start);
+    }
 }
 
 // The positions alone, packed for a display's readback (DeviceContours::requestRead).
@@ -122,27 +203,41 @@ VF_KERNEL void positionsOf(__global const float4 *motion, uint n, __global float
 VF_DEFINE_LOCAL_REDUCE(float, maxFloat, fmax)
 
 // Largest |u(v_b) − u(v_a)|·stepLength / d_e over the edges (ContourTracker::strainInSpacings),
-// with the flow at the end of its span. Each vertex samples the flow once, and leaves the sample
-// in velocityAt for the advection's first stage; the next vertex's velocity comes from its
-// neighbour in the work-group, sampled again only across a tile or a contour's closing edge.
+// with the flow at the end of its span; launched over one work-item per VF_LANES vertices. Each
+// vertex samples the flow once, and leaves the sample in velocityAt for the advection's first
+// stage; an edge's far end takes its neighbour's sample, and samples it again only across a tile
+// or a contour's closing edge.
 VF_KERNEL void strain(FLOW_ARGS, float stepLength, __global const float4 *motion, __global const float *spacing,
                       CONTOUR_ARGS, uint n, __global float2 *velocityAt, __global uint *status)
 {
-    __local float2 velocity[VF_LOCAL];
+    __local float2 firstLane[VF_LOCAL];
     __local float scratch[VF_SCAN_SCRATCH];
-    const uint i = get_global_id(0), lid = get_local_id(0);
-    const float2 u = i < n ? flowVelocity(FLOW_PASS, motion[i].xy, 1.0f) : (float2)(0.0f);
-    if (i < n)
-        velocityAt[i] = u;
-    velocity[lid] = u;
+    const uint g = get_global_id(0), lid = get_local_id(0);
+    const bool active = VF_LANES * g < n;
+    float u[2][VF_LANES];
+    if (active) {
+        floatv x, y, ux, uy;
+        lanesOf((__global const float *)motion, 4, g, n, &x, &y);
+        flowVelocityLanes(FLOW_PASS, x, y, 1.0f, &ux, &uy);
+        VF_VSTORE(ux, 0, u[0]);
+        VF_VSTORE(uy, 0, u[1]);
+    }
+    firstLane[lid] = active ? (float2)(u[0][0], u[1][0]) : (float2)(0.0f);
     barrier(CLK_LOCAL_MEM_FENCE);
     float s = 0.0f;
-    if (i < n) {
-        const uint c = contourOf[i];
+    for (int k = 0; active && k < VF_LANES && VF_LANES * g + k < n; ++k) {
+        const uint i = VF_LANES * g + k, c = contourOf[i];
         const uint j = nextIn(i, contourOffset[c], contourCount[c]);
-        const float2 uj =
-            j == i + 1 && lid + 1 < VF_LOCAL ? velocity[lid + 1] : flowVelocity(FLOW_PASS, motion[j].xy, 1.0f);
-        s = distance(u, uj) * stepLength / (0.5f * (spacing[i] + spacing[j]));
+        const float2 ui = (float2)(u[0][k], u[1][k]);
+        velocityAt[i] = ui;
+        float2 uj;
+        if (j == i + 1 && k + 1 < VF_LANES)
+            uj = (float2)(u[0][k + 1], u[1][k + 1]);
+        else if (j == i + 1 && lid + 1 < VF_LOCAL)
+            uj = firstLane[lid + 1];
+        else
+            uj = flowVelocity(FLOW_PASS, motion[j].xy, 1.0f);
+        s = fmax(s, distance(ui, uj) * stepLength / (0.5f * (spacing[i] + spacing[j])));
     }
     const float worst = VF_LOCAL_REDUCE(maxFloat)(scratch, s);
     if (lid == 0)

@@ -9,57 +9,98 @@
 // Comes after flow.h.cl; fluid.cl traces through the same helpers. Every helper is force-inlined:
 // PoCL's vectoriser gives up on kernels that call large functions that are not inlined.
 
-#ifndef VF_INLINE
-#define VF_INLINE inline __attribute__((always_inline))
-#endif
-
-// A position on a row-major cols x rows lattice (cols, rows >= 2): the lattice point (i, j) at the
-// low corner of the square holding it and the fractions across (detail::LatticePoint). Everything
-// here is scalar: PoCL's loop vectoriser refuses loops that hold float2 or float4 values.
-typedef struct {
-    int i, j;
-    float fx, fy;
-} MacPoint;
-
-// As detail::locate: positions outside are clamped onto the lattice, NaN to the low end (it fails
-// `0 < g`), so no position, however bad, indexes out of bounds.
-VF_INLINE MacPoint macLocate(int cols, int rows, float gx, float gy)
+// The halfway field, stored after the start field.
+VF_INLINE __global const float* macHalfwayU(__global const float* u0, int nx, int ny)
 {
-    gx = fmin(0.0f < gx ? gx : 0.0f, (float)(cols - 1));
-    gy = fmin(0.0f < gy ? gy : 0.0f, (float)(rows - 1));
-    MacPoint q;
-    q.i = min((int)gx, cols - 2);
-    q.j = min((int)gy, rows - 2);
-    q.fx = gx - (float)q.i;
-    q.fy = gy - (float)q.j;
-    return q;
+    return u0 + (nx + 1) * ny;
 }
 
-// Bilinear interpolation across the square at q of the values at its corners.
-VF_INLINE float macBlendCorners(MacPoint q, float low, float right, float down, float diagonal)
+VF_INLINE __global const float* macHalfwayV(__global const float* v0, int nx, int ny)
 {
-    return (1.0f - q.fy) * ((1.0f - q.fx) * low + q.fx * right)
-         + q.fy * ((1.0f - q.fx) * down + q.fx * diagonal);
+    return v0 + nx * (ny + 1);
 }
 
-VF_INLINE float macBilinear(__global const float* f, int cols, MacPoint q)
+// s clamped to [0, 1]; 1 (the end field) when the span is empty, as FluidFlow::blend. RK4
+// (contours.cl) passes its stages' s exactly (0, ½, 1), so its middle stages sample the halfway
+// field alone.
+VF_INLINE float macBlend(float dt, float s)
 {
-    __global const float* r0 = f + q.j * cols + q.i;
-    __global const float* r1 = r0 + cols;
-    return macBlendCorners(q, r0[0], r0[1], r1[0], r1[1]);
+    return dt > 0.0f ? clamp(s, 0.0f, 1.0f) : 1.0f;
 }
 
-// The velocity at (gx, gy) in cell units (x / hx, y / hy): u lives at (i, j + 1/2), v at
-// (i + 1/2, j).
-VF_INLINE float macSampleU(__global const float* u, int nx, int ny, float gx, float gy)
-{
-    return macBilinear(u, nx + 1, macLocate(nx + 1, ny, gx, gy - 0.5f));
-}
+// The sampler is written once for a type T with integer type I: float and int for one point
+// (the names below without a suffix), floatv and intv for lanes (suffix Lanes). `GATHER(f, k)` reads
+// f[k] for each of T's values.
+#define VF_GATHER_ONE(f, k) (f)[k]
+#define VF_DEFINE_MAC_SAMPLER(T, I, S, CONVERT_T, CONVERT_I, GATHER)                             \
+    /* A position on a row-major cols x rows lattice (cols, rows >= 2): the lattice point (i, j) \
+       at the low corner of the square holding it and the fractions across                     \
+       (detail::LatticePoint). No float2 here: PoCL's loop vectoriser refuses them. */         \
+    typedef struct {                                                                           \
+        I i, j;                                                                                \
+        T fx, fy;                                                                              \
+    } MacPoint##S;                                                                             \
+                                                                                               \
+    /* As detail::locate: positions outside are clamped onto the lattice, NaN to the low end   \
+       (it fails `0 < g`), so no position, however bad, indexes out of bounds. */              \
+    VF_INLINE MacPoint##S macLocate##S(int cols, int rows, T gx, T gy)                         \
+    {                                                                                          \
+        gx = fmin(select((T)(0.0f), gx, isless((T)(0.0f), gx)), (T)(cols - 1));                \
+        gy = fmin(select((T)(0.0f), gy, isless((T)(0.0f), gy)), (T)(rows - 1));                \
+        MacPoint##S q;                                                                         \
+        q.i = min(CONVERT_I(gx), (I)(cols - 2));                                               \
+        q.j = min(CONVERT_I(gy), (I)(rows - 2));                                               \
+        q.fx = gx - CONVERT_T(q.i);                                                            \
+        q.fy = gy - CONVERT_T(q.j);                                                            \
+        return q;                                                                              \
+    }                                                                                          \
+                                                                                               \
+    /* Bilinear interpolation across the square at q of the values at its corners. */          \
+    VF_INLINE T macBlendCorners##S(MacPoint##S q, T low, T right, T down, T diagonal)          \
+    {                                                                                          \
+        return (1.0f - q.fy) * ((1.0f - q.fx) * low + q.fx * right)                            \
+             + q.fy * ((1.0f - q.fx) * down + q.fx * diagonal);                                \
+    }                                                                                          \
+                                                                                               \
+    VF_INLINE T macBilinear##S(__global const float *f, int cols, MacPoint##S q)               \
+    {                                                                                          \
+        const I k = q.j * cols + q.i;                                                          \
+        return macBlendCorners##S(q, GATHER(f, k), GATHER(f, k + 1), GATHER(f, k + cols),      \
+                                  GATHER(f, k + cols + 1));                                    \
+    }                                                                                          \
+                                                                                               \
+    /* The velocity at (gx, gy) in cell units (x / hx, y / hy): u lives at (i, j + 1/2), v at  \
+       (i + 1/2, j). */                                                                        \
+    VF_INLINE T macSampleU##S(__global const float *u, int nx, int ny, T gx, T gy)             \
+    {                                                                                          \
+        return macBilinear##S(u, nx + 1, macLocate##S(nx + 1, ny, gx, gy - 0.5f));             \
+    }                                                                                          \
+                                                                                               \
+    VF_INLINE T macSampleV##S(__global const float *v, int nx, int ny, T gx, T gy)             \
+    {                                                                                          \
+        return macBilinear##S(v, nx, macLocate##S(nx, ny + 1, gx - 0.5f, gy));                 \
+    }                                                                                          \
+                                                                                               \
+    /* The velocity at (x, y) `along` of the way through the step. RK4 asks at s = 0, ½, ½, 1, \
+       each answered by one field (FluidFlow::interpolate); the work-items of a launch share   \
+       t, so the branches agree. */                                                            \
+    VF_INLINE void macVelocity##S(FLOW_PARAMS, T x, T y, float along, T *ux, T *uy)            \
+    {                                                                                          \
+        const float s = macBlend(dt, along);                                                   \
+        const T gx = x / hx, gy = y / hy;                                                      \
+        __global const float *u = s == 0.0f ? u0 : s == 0.5f ? macHalfwayU(u0, nx, ny) : u1;   \
+        __global const float *v = s == 0.0f ? v0 : s == 0.5f ? macHalfwayV(v0, nx, ny) : v1;   \
+        *ux = macSampleU##S(u, nx, ny, gx, gy);                                                \
+        *uy = macSampleV##S(v, nx, ny, gx, gy);                                                \
+        if (s != 0.0f && s != 0.5f && s != 1.0f) {                                             \
+            const T x0 = macSampleU##S(u0, nx, ny, gx, gy), y0 = macSampleV##S(v0, nx, ny, gx, gy); \
+            *ux = x0 + s * (*ux - x0);                                                         \
+            *uy = y0 + s * (*uy - y0);                                                         \
+        }                                                                                      \
+    }
 
-VF_INLINE float macSampleV(__global const float* v, int nx, int ny, float gx, float gy)
-{
-    return macBilinear(v, nx, macLocate(nx, ny + 1, gx - 0.5f, gy));
-}
+VF_DEFINE_MAC_SAMPLER(float, int, , convert_float, convert_int, VF_GATHER_ONE)
+VF_DEFINE_MAC_SAMPLER(floatv, intv, Lanes, VF_CONVERT_FLOATV, VF_CONVERT_INTV, gatherLanes)
 
 // As detail::cornerDifferences: v across cell corner (i, j) along x and u across it along y,
 // central around the corner, the nearest interior difference on the canvas edge.
@@ -111,40 +152,16 @@ VF_INLINE float macVorticityFromCorners(__global const float* du, __global const
     return macBilinear(dv, nx + 1, q) / hx - macBilinear(du, nx + 1, q) / hy;
 }
 
-// The halfway field, stored after the start field.
-VF_INLINE __global const float* macHalfwayU(__global const float* u0, int nx, int ny)
+VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float s)
 {
-    return u0 + (nx + 1) * ny;
-}
-
-VF_INLINE __global const float* macHalfwayV(__global const float* v0, int nx, int ny)
-{
-    return v0 + nx * (ny + 1);
-}
-
-// s clamped to [0, 1]; 1 (the end field) when the span is empty, as FluidFlow::blend. RK4
-// (contours.cl) passes its stages' s exactly (0, ½, 1), so its middle stages sample the halfway
-// field alone.
-VF_INLINE float macBlend(float dt, float s)
-{
-    return dt > 0.0f ? clamp(s, 0.0f, 1.0f) : 1.0f;
-}
-
-// The velocity `s` of the way through the step. RK4 asks at s = 0, ½, ½, 1, each answered by one
-// field (FluidFlow::interpolate); the work-items of a launch share t, so the branches agree.
-VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float along)
-{
-    const float s = macBlend(dt, along);
-    const float gx = p.x / hx, gy = p.y / hy;
-    __global const float* u = s == 0.0f ? u0 : s == 0.5f ? macHalfwayU(u0, nx, ny) : u1;
-    __global const float* v = s == 0.0f ? v0 : s == 0.5f ? macHalfwayV(v0, nx, ny) : v1;
-    float x = macSampleU(u, nx, ny, gx, gy), y = macSampleV(v, nx, ny, gx, gy);
-    if (s != 0.0f && s != 0.5f && s != 1.0f) {
-        const float x0 = macSampleU(u0, nx, ny, gx, gy), y0 = macSampleV(v0, nx, ny, gx, gy);
-        x = x0 + s * (x - x0);
-        y = y0 + s * (y - y0);
-    }
+    float x, y;
+    macVelocity(FLOW_PASS, p.x, p.y, s, &x, &y);
     return (float2)(x, y);
+}
+
+VF_INLINE void flowVelocityLanes(FLOW_PARAMS, floatv x, floatv y, float s, floatv *u, floatv *v)
+{
+    macVelocityLanes(FLOW_PASS, x, y, s, u, v);
 }
 
 VF_INLINE float flowVorticity(FLOW_PARAMS, float2 p, float along)

@@ -64,6 +64,7 @@ inline __attribute__((always_inline)) float2 flowVelocity(FLOW_PARAMS, float2 p,
         return (float2)(-M_PI_F * (p.y - 0.5f), M_PI_F * (p.x - 0.5f));
     return (float2)(0.5f - p.x, 0.5f - p.y);
 }
+VF_DEFINE_VELOCITY_LANES_BY_LANE
 inline __attribute__((always_inline)) float flowVorticity(FLOW_PARAMS, float2 p, float s)
 {
     const float t = t0 + s * dt;

@@ -12,6 +12,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -175,10 +176,12 @@ private slots:
     void deterministicAndSnapshotsReplay();
     void bindingHoldsStepStartAndEnd();
     void flowSamplingMatchesReference();
+    void laneSamplingMatchesOnePoint();
     void badInputThrows();
 
 private:
     std::vector<double> sampleOnDevice(const FlowBinding& flow, const std::vector<float>& points);
+    std::vector<double> sampleLanesOnDevice(const FlowBinding& flow, const std::vector<float>& points);
 
     std::optional<Device> m_device;
 };
@@ -493,6 +496,73 @@ std::vector<double> TestDeviceFluid::sampleOnDevice(const FlowBinding& flow,
     cl::Buffer out(m_device->context(), CL_MEM_WRITE_ONLY, bytes);
     const int n = int(points.size() / 3);
     opencl::launch(m_device->queue(), sample, n, flow, in, n, out);
+    return readBuffer(*m_device, out, points.size());
+}
+
+// flowVelocityLanes, which advects the contours eight vertices at a time, gives bit for bit what
+// flowVelocity gives for each of its lanes, inside the canvas and clamped outside it, at every s
+// RK4 asks for and between them.
+void TestDeviceFluid::laneSamplingMatchesOnePoint()
+{
+    const FluidSettings s = settings(20, 12, 2.0, 0.75, 0.0);
+    DeviceFluid fluid(*m_device, s);
+    fluid.writeVelocity(waves(s, 0.0));
+    fluid.addStylus({0.5, 0.3}, {1.5, 0.4}, 0.2, 0.2);
+    fluid.step(kDt);
+    const FlowBinding flow = fluid.binding(0.0, kDt);
+
+    std::vector<float> points;  // x, y, s; the eight points of a lane group share their s
+    const std::array<float, 5> fractions{0.0f, 0.5f, 1.0f, 0.25f, 1.5f};
+    for (int k = 0; k < 8 * 40; ++k) {
+        const double x = -0.2 + 2.4 * (k % 29) / 28.0, y = -0.1 + 0.95 * (k % 31) / 30.0;
+        points.insert(points.end(), {float(x), float(y), fractions[std::size_t(k / 8) % fractions.size()]});
+    }
+    const std::vector<double> one = sampleOnDevice(flow, points), lanes = sampleLanesOnDevice(flow, points);
+    for (std::size_t k = 0; k < points.size(); k += 3) {
+        QVERIFY2(lanes[k] == one[k] && lanes[k + 1] == one[k + 1],
+                 qPrintable(QString("at (%1, %2, s = %3): lanes give (%4, %5), one point (%6, %7)")
+                                .arg(points[k])
+                                .arg(points[k + 1])
+                                .arg(points[k + 2])
+                                .arg(lanes[k])
+                                .arg(lanes[k + 1])
+                                .arg(one[k])
+                                .arg(one[k + 1])));
+    }
+}
+
+// The velocity at each (x, y, s) of `points` (3 floats each, 8 points a group sharing the s of the
+// first), sampled by flowVelocityLanes a group at a time, as (u, v, 0) per point.
+std::vector<double> TestDeviceFluid::sampleLanesOnDevice(const FlowBinding& flow, const std::vector<float>& points)
+{
+    const std::string source = opencl::joinedKernelSources({"flow.h.cl", "flow_fluid.cl"}) + R"(
+        __kernel void sampleLanes(FLOW_ARGS, __global const float* points, int groups, __global float* out)
+        {
+            const int g = get_global_id(0);
+            if (g >= groups)
+                return;
+            float xs[VF_LANES], ys[VF_LANES];
+            for (int k = 0; k < VF_LANES; ++k) {
+                xs[k] = points[3 * (VF_LANES * g + k)];
+                ys[k] = points[3 * (VF_LANES * g + k) + 1];
+            }
+            floatv u, v;
+            flowVelocityLanes(FLOW_PASS, VF_VLOAD(0, xs), VF_VLOAD(0, ys), points[3 * VF_LANES * g + 2], &u, &v);
+            VF_VSTORE(u, 0, xs);
+            VF_VSTORE(v, 0, ys);
+            for (int k = 0; k < VF_LANES; ++k) {
+                out[3 * (VF_LANES * g + k)] = xs[k];
+                out[3 * (VF_LANES * g + k) + 1] = ys[k];
+                out[3 * (VF_LANES * g + k) + 2] = 0.0f;
+            }
+        })";
+    cl::Kernel sample(m_device->build(source, "the lane sampling test kernel"), "sampleLanes");
+    const std::size_t bytes = points.size() * sizeof(float);
+    cl::Buffer in(m_device->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
+                  const_cast<float*>(points.data()));
+    cl::Buffer out(m_device->context(), CL_MEM_WRITE_ONLY, bytes);
+    const int groups = int(points.size() / 3 / opencl::lanes);
+    opencl::launch(m_device->queue(), sample, std::size_t(groups), flow, in, groups, out);
     return readBuffer(*m_device, out, points.size());
 }
 
