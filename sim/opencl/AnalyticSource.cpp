@@ -282,13 +282,13 @@ std::string analyticFlowSource(const std::string& u, const std::string& v)
            "inline __attribute__((always_inline)) float analyticV(float x, float y, float t) { return " + vC + "; }\n"
            "inline __attribute__((always_inline)) float2 flowVelocity(FLOW_PARAMS, float2 p, float s)\n"
            "{ const float t = t0 + s * dt; return (float2)(analyticU(p.x, p.y, t), analyticV(p.x, p.y, t)); }\n"
-           "VF_DEFINE_VELOCITY_LANES_BY_LANE\n"
            "inline __attribute__((always_inline)) float flowVorticity(FLOW_PARAMS, float2 p, float s)\n"
            "{\n"
            "    const float t = t0 + s * dt, h = 1e-3f;\n"
            "    return (analyticV(p.x + h, p.y, t) - analyticV(p.x - h, p.y, t)) / (2.0f * h)\n"
            "         - (analyticU(p.x, p.y + h, t) - analyticU(p.x, p.y - h, t)) / (2.0f * h);\n"
-           "}\n";
+           "}\n"
+           "VF_DEFINE_LANES_BY_LANE\n";
 }
 
 } // namespace vf::sim::opencl

@@ -376,7 +376,7 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
         buildGrid(g);
         launch(queue, nearestOtherPart, vertices, g, n, work, back.motion, contourLength, back.contour);
     }
-    launch(queue, rawSpacing, vertices, flow, front.motion, front.contour, contourOffset, contourCount, n,
+    launch(queue, rawSpacing, laneGroups(vertices), flow, front.motion, front.contour, contourOffset, contourCount, n,
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
            cl_float(settings.proximityLength()), g.cellSize, cl_int(settings.proximity), tileOffset, back.contour,
            back.spacing);

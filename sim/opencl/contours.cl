@@ -146,6 +146,19 @@ VF_INLINE void lanesOf(__global const float *records, uint stride, uint g, uint 
     *y = VF_VLOAD(0, ys);
 }
 
+// values[i] = each lane's value, for the lanes that hold a vertex.
+VF_INLINE void storeLanes(__global float *values, uint g, uint n, floatv v)
+{
+    if (VF_LANES * g + VF_LANES <= n) {
+        VF_VSTORE(v, g, values);
+        return;
+    }
+    float vs[VF_LANES];
+    VF_VSTORE(v, 0, vs);
+    for (int k = 0; k < VF_LANES && VF_LANES * g + k < n; ++k)
+        values[VF_LANES * g + k] = vs[k];
+}
+
 // Launched over one work-item per VF_LANES vertices. With `startKnown` (a flow motion only),
 // startVelocity[i] is the flow's velocity at vertex i at t0, sampled by the strain check: RK4's
 // first stage, bit for bit.

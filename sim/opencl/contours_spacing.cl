@@ -176,36 +176,49 @@ VF_KERNEL void nearestOtherPart(GRID_ARGS, uint n, __global const uint *bucketSt
         atomic_min(&gap2[self], as_uint(best2));
 }
 
-// Menger curvature: 1 / radius of the circle through the three points (SpacingField).
-VF_INLINE float mengerCurvature(float2 before, float2 at, float2 after)
+// Menger curvature: 1 / radius of the circle through the three points (SpacingField), in lanes.
+VF_INLINE floatv mengerCurvature(floatv beforeX, floatv beforeY, floatv x, floatv y, floatv afterX, floatv afterY)
 {
-    const float2 e0 = at - before, e1 = after - at, chord = after - before;
-    const float denominator = sqrt(dot(e0, e0) * dot(e1, e1) * dot(chord, chord));
-    return denominator > 0.0f ? 2.0f * fabs(cross2(e0, e1)) / denominator : 0.0f;
+    const floatv e0x = x - beforeX, e0y = y - beforeY, e1x = afterX - x, e1y = afterY - y;
+    const floatv chordX = afterX - beforeX, chordY = afterY - beforeY;
+    const floatv denominator =
+        sqrt((e0x * e0x + e0y * e0y) * (e1x * e1x + e1y * e1y) * (chordX * chordX + chordY * chordY));
+    return select((floatv)(0.0f), 2.0f * fabs(e0x * e1y - e0y * e1x) / denominator,
+                  isless((floatv)(0.0f), denominator));
 }
 
-// d_max·exp(−|κ|·Lκ − |ω|/ω_ref)·(1 − exp(−dist/Lp)): eqs. 3, 4, 5 and 7 before smoothing.
-// With `proximity`, the squared distances come from nearestOtherPart, found through the vertex's grid
-// slot (none within the search radius: no proximity term).
+// d_max·exp(−|κ|·Lκ − |ω|/ω_ref)·(1 − exp(−dist/Lp)): eqs. 3, 4, 5 and 7 before smoothing, launched
+// over one work-item per VF_LANES vertices. With `proximity`, the squared distances come from
+// nearestOtherPart, found through the vertex's grid slot (none within the search radius: no
+// proximity term).
 VF_KERNEL void rawSpacing(FLOW_ARGS, __global const float4 *motion, CONTOUR_ARGS, uint n, float maxSpacing,
                           float curvatureLength, float vorticityScale, float proximityLength, float searchRadius,
                           int proximity,
                           __global const uint *slot, __global const uint *gap2, __global float *raw)
 {
-    const uint i = get_global_id(0);
-    if (i >= n)
+    const uint g = get_global_id(0);
+    if (VF_LANES * g >= n)
         return;
-    const uint c = contourOf[i], first = contourOffset[c], count = contourCount[c];
-    const float2 p = motion[i].xy;
-    const float kappa = mengerCurvature(motion[previousIn(i, first, count)].xy, p, motion[nextIn(i, first, count)].xy);
-    // exp(−a)·exp(−b) of eqs. 4 and 5 as one exponential.
-    float factor = exp(-kappa * curvatureLength - fabs(flowVorticity(FLOW_PASS, p, 1.0f)) / vorticityScale);
-    if (proximity) {
-        const float distance2 = as_float(gap2[slot[i]]);
-        if (distance2 < searchRadius * searchRadius)
-            factor *= 1.0f - exp(-sqrt(distance2) / proximityLength);
+    const float radius2 = searchRadius * searchRadius;
+    float before[2][VF_LANES], after[2][VF_LANES], distance2[VF_LANES];
+    for (int k = 0; k < VF_LANES; ++k) {
+        const uint i = laneVertex(g, k, n), c = contourOf[i], first = contourOffset[c], count = contourCount[c];
+        const float4 b = motion[previousIn(i, first, count)], a = motion[nextIn(i, first, count)];
+        before[0][k] = b.x;
+        before[1][k] = b.y;
+        after[0][k] = a.x;
+        after[1][k] = a.y;
+        distance2[k] = proximity ? as_float(gap2[slot[i]]) : radius2;
     }
-    raw[i] = maxSpacing * factor;
+    floatv x, y;
+    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
+    const floatv kappa = mengerCurvature(VF_VLOAD(0, before[0]), VF_VLOAD(0, before[1]), x, y, VF_VLOAD(0, after[0]),
+                                         VF_VLOAD(0, after[1]));
+    // exp(−a)·exp(−b) of eqs. 4 and 5 as one exponential.
+    floatv factor = exp(-kappa * curvatureLength - fabs(flowVorticityLanes(FLOW_PASS, x, y, 1.0f)) / vorticityScale);
+    const floatv gap = VF_VLOAD(0, distance2);
+    factor = select(factor, factor * (1.0f - exp(-sqrt(gap) / proximityLength)), isless(gap, (floatv)(radius2)));
+    storeLanes(raw, g, n, maxSpacing * factor);
 }
 
 // Eq. 6 along the closed contour, then + ε and the clamp to d_max.

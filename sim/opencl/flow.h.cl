@@ -31,9 +31,9 @@ VF_INLINE floatv gatherLanes(__global const float *f, intv k)
     return (floatv)(f[k.s0], f[k.s1], f[k.s2], f[k.s3], f[k.s4], f[k.s5], f[k.s6], f[k.s7]);
 }
 
-// For flows that have no lane sampler of their own (the analytic flows): flowVelocityLanes from
-// flowVelocity, one lane after the other.
-#define VF_DEFINE_VELOCITY_LANES_BY_LANE                                                        \
+// For flows that have no lane sampler of their own (the analytic flows): flowVelocityLanes and
+// flowVorticityLanes from flowVelocity and flowVorticity, one lane after the other.
+#define VF_DEFINE_LANES_BY_LANE                                                                \
     VF_INLINE void flowVelocityLanes(FLOW_PARAMS, floatv x, floatv y, float s, floatv *u, floatv *v) \
     {                                                                                          \
         float xs[VF_LANES], ys[VF_LANES], us[VF_LANES], vs[VF_LANES];                          \
@@ -46,4 +46,17 @@ VF_INLINE floatv gatherLanes(__global const float *f, intv k)
         }                                                                                      \
         *u = VF_VLOAD(0, us);                                                                  \
         *v = VF_VLOAD(0, vs);                                                                  \
+    }                                                                                          \
+    VF_DEFINE_VORTICITY_BY_LANE(flowVorticityLanes)
+
+// NAME(FLOW_PARAMS, x, y, s): flowVorticity of each lane, one after the other.
+#define VF_DEFINE_VORTICITY_BY_LANE(NAME)                                                      \
+    VF_INLINE floatv NAME(FLOW_PARAMS, floatv x, floatv y, float s)                            \
+    {                                                                                          \
+        float xs[VF_LANES], ys[VF_LANES];                                                      \
+        VF_VSTORE(x, 0, xs);                                                                   \
+        VF_VSTORE(y, 0, ys);                                                                   \
+        for (int k = 0; k < VF_LANES; ++k)                                                     \
+            xs[k] = flowVorticity(FLOW_PASS, (float2)(xs[k], ys[k]), s);                       \
+        return VF_VLOAD(0, xs);                                                                \
     }

@@ -28,6 +28,18 @@ VF_INLINE float macBlend(float dt, float s)
     return dt > 0.0f ? clamp(s, 0.0f, 1.0f) : 1.0f;
 }
 
+// The field's corner differences, stored after the end field (fluid.cl, cornerDifferences): the
+// same values macCornerDu and macCornerDv give, on the (nx + 1) x (ny + 1) corners.
+VF_INLINE __global const float* macCornerDuAfter(__global const float* u, int nx, int ny)
+{
+    return u + (nx + 1) * ny;
+}
+
+VF_INLINE __global const float* macCornerDvAfter(__global const float* v, int nx, int ny)
+{
+    return v + nx * (ny + 1);
+}
+
 // The sampler is written once for a type T with integer type I: float and int for one point
 // (the names below without a suffix), floatv and intv for lanes (suffix Lanes). `GATHER(f, k)` reads
 // f[k] for each of T's values.
@@ -97,6 +109,15 @@ VF_INLINE float macBlend(float dt, float s)
             *ux = x0 + s * (*ux - x0);                                                         \
             *uy = y0 + s * (*uy - y0);                                                         \
         }                                                                                      \
+    }                                                                                          \
+                                                                                               \
+    /* The end field's vorticity at (x, y) from its stored corner differences: the blends of   \
+       macVorticity, of the same values. */                                                    \
+    VF_INLINE T macEndVorticity##S(FLOW_PARAMS, T x, T y)                                       \
+    {                                                                                          \
+        const MacPoint##S q = macLocate##S(nx + 1, ny + 1, x / hx, y / hy);                    \
+        return macBilinear##S(macCornerDvAfter(v1, nx, ny), nx + 1, q) / hx                    \
+             - macBilinear##S(macCornerDuAfter(u1, nx, ny), nx + 1, q) / hy;                   \
     }
 
 VF_DEFINE_MAC_SAMPLER(float, int, , convert_float, convert_int, VF_GATHER_ONE)
@@ -132,26 +153,6 @@ VF_INLINE float macVorticity(__global const float* u, __global const float* v, i
     return dv / hx - du / hy;
 }
 
-// The field's corner differences, stored after the end field (fluid.cl, cornerDifferences): the
-// same values macCornerDu and macCornerDv give, on the (nx + 1) x (ny + 1) corners.
-VF_INLINE __global const float* macCornerDuAfter(__global const float* u, int nx, int ny)
-{
-    return u + (nx + 1) * ny;
-}
-
-VF_INLINE __global const float* macCornerDvAfter(__global const float* v, int nx, int ny)
-{
-    return v + nx * (ny + 1);
-}
-
-// macVorticity from the stored corner differences: the same blends of the same values.
-VF_INLINE float macVorticityFromCorners(__global const float* du, __global const float* dv, int nx,
-                                        int ny, float hx, float hy, float2 p)
-{
-    const MacPoint q = macLocate(nx + 1, ny + 1, p.x / hx, p.y / hy);
-    return macBilinear(dv, nx + 1, q) / hx - macBilinear(du, nx + 1, q) / hy;
-}
-
 VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float s)
 {
     float x, y;
@@ -169,10 +170,18 @@ VF_INLINE float flowVorticity(FLOW_PARAMS, float2 p, float along)
     const float s = macBlend(dt, along);
     if (s == 0.5f)
         return macVorticity(macHalfwayU(u0, nx, ny), macHalfwayV(v0, nx, ny), nx, ny, hx, hy, p);
-    const float end = macVorticityFromCorners(macCornerDuAfter(u1, nx, ny), macCornerDvAfter(v1, nx, ny),
-                                              nx, ny, hx, hy, p);
+    const float end = macEndVorticity(FLOW_PASS, p.x, p.y);
     if (s == 1.0f)
         return end;
     const float start = macVorticity(u0, v0, nx, ny, hx, hy, p);
     return start + s * (end - start);
+}
+
+VF_DEFINE_VORTICITY_BY_LANE(macVorticityByLane)
+
+// The end field's vorticity (all that refinement asks for) in lanes; any other moment lane by lane.
+VF_INLINE floatv flowVorticityLanes(FLOW_PARAMS, floatv x, floatv y, float along)
+{
+    return macBlend(dt, along) == 1.0f ? macEndVorticityLanes(FLOW_PASS, x, y)
+                                       : macVorticityByLane(FLOW_PASS, x, y, along);
 }

@@ -64,7 +64,6 @@ inline __attribute__((always_inline)) float2 flowVelocity(FLOW_PARAMS, float2 p,
         return (float2)(-M_PI_F * (p.y - 0.5f), M_PI_F * (p.x - 0.5f));
     return (float2)(0.5f - p.x, 0.5f - p.y);
 }
-VF_DEFINE_VELOCITY_LANES_BY_LANE
 inline __attribute__((always_inline)) float flowVorticity(FLOW_PARAMS, float2 p, float s)
 {
     const float t = t0 + s * dt;
@@ -74,6 +73,7 @@ inline __attribute__((always_inline)) float flowVorticity(FLOW_PARAMS, float2 p,
     }
     return nx == 1 ? 2.0f * M_PI_F : 0.0f;
 }
+VF_DEFINE_LANES_BY_LANE
 )CL";
 
 sim::TrackingSettings tracking(double maxSpacing, bool adaptive)

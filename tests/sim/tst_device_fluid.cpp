@@ -499,9 +499,9 @@ std::vector<double> TestDeviceFluid::sampleOnDevice(const FlowBinding& flow,
     return readBuffer(*m_device, out, points.size());
 }
 
-// flowVelocityLanes, which advects the contours eight vertices at a time, gives bit for bit what
-// flowVelocity gives for each of its lanes, inside the canvas and clamped outside it, at every s
-// RK4 asks for and between them.
+// flowVelocityLanes and flowVorticityLanes, which advect the contours and set their spacing eight
+// vertices at a time, give bit for bit what flowVelocity and flowVorticity give for each of their
+// lanes, inside the canvas and clamped outside it, at every s that RK4 asks for and between them.
 void TestDeviceFluid::laneSamplingMatchesOnePoint()
 {
     const FluidSettings s = settings(20, 12, 2.0, 0.75, 0.0);
@@ -519,20 +519,23 @@ void TestDeviceFluid::laneSamplingMatchesOnePoint()
     }
     const std::vector<double> one = sampleOnDevice(flow, points), lanes = sampleLanesOnDevice(flow, points);
     for (std::size_t k = 0; k < points.size(); k += 3) {
-        QVERIFY2(lanes[k] == one[k] && lanes[k + 1] == one[k + 1],
-                 qPrintable(QString("at (%1, %2, s = %3): lanes give (%4, %5), one point (%6, %7)")
+        QVERIFY2(lanes[k] == one[k] && lanes[k + 1] == one[k + 1] && lanes[k + 2] == one[k + 2],
+                 qPrintable(QString("at (%1, %2, s = %3): lanes give (%4, %5), vorticity %6; one point "
+                                    "(%7, %8), vorticity %9")
                                 .arg(points[k])
                                 .arg(points[k + 1])
                                 .arg(points[k + 2])
                                 .arg(lanes[k])
                                 .arg(lanes[k + 1])
+                                .arg(lanes[k + 2])
                                 .arg(one[k])
-                                .arg(one[k + 1])));
+                                .arg(one[k + 1])
+                                .arg(one[k + 2])));
     }
 }
 
-// The velocity at each (x, y, s) of `points` (3 floats each, 8 points a group sharing the s of the
-// first), sampled by flowVelocityLanes a group at a time, as (u, v, 0) per point.
+// The flow and its vorticity at each (x, y, s) of `points` (3 floats each, 8 points a group sharing
+// the s of the first), sampled by flowVelocityLanes and flowVorticityLanes a group at a time.
 std::vector<double> TestDeviceFluid::sampleLanesOnDevice(const FlowBinding& flow, const std::vector<float>& points)
 {
     const std::string source = opencl::joinedKernelSources({"flow.h.cl", "flow_fluid.cl"}) + R"(
@@ -546,14 +549,18 @@ std::vector<double> TestDeviceFluid::sampleLanesOnDevice(const FlowBinding& flow
                 xs[k] = points[3 * (VF_LANES * g + k)];
                 ys[k] = points[3 * (VF_LANES * g + k) + 1];
             }
+            const floatv x = VF_VLOAD(0, xs), y = VF_VLOAD(0, ys);
+            const float s = points[3 * VF_LANES * g + 2];
             floatv u, v;
-            flowVelocityLanes(FLOW_PASS, VF_VLOAD(0, xs), VF_VLOAD(0, ys), points[3 * VF_LANES * g + 2], &u, &v);
-            VF_VSTORE(u, 0, xs);
-            VF_VSTORE(v, 0, ys);
+            flowVelocityLanes(FLOW_PASS, x, y, s, &u, &v);
+            float us[VF_LANES], vs[VF_LANES], ws[VF_LANES];
+            VF_VSTORE(u, 0, us);
+            VF_VSTORE(v, 0, vs);
+            VF_VSTORE(flowVorticityLanes(FLOW_PASS, x, y, s), 0, ws);
             for (int k = 0; k < VF_LANES; ++k) {
-                out[3 * (VF_LANES * g + k)] = xs[k];
-                out[3 * (VF_LANES * g + k) + 1] = ys[k];
-                out[3 * (VF_LANES * g + k) + 2] = 0.0f;
+                out[3 * (VF_LANES * g + k)] = us[k];
+                out[3 * (VF_LANES * g + k) + 1] = vs[k];
+                out[3 * (VF_LANES * g + k) + 2] = ws[k];
             }
         })";
     cl::Kernel sample(m_device->build(source, "the lane sampling test kernel"), "sampleLanes");
