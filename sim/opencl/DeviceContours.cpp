@@ -380,7 +380,7 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
            cl_float(settings.proximityLength()), g.cellSize, cl_int(settings.proximity), tileOffset, back.contour,
            back.spacing);
-    launch(queue, smoothSpacing, vertices, back.spacing, front.contour, contourOffset, contourCount, n, weights,
+    launch(queue, smoothSpacing, laneGroups(vertices), back.spacing, front.contour, contourOffset, contourCount, n, weights,
            cl_int(smoothingRadius), cl_float(settings.minSpacing()), cl_float(settings.maxSpacing), front.spacing);
 }
 

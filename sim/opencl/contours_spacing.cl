@@ -221,23 +221,31 @@ VF_KERNEL void rawSpacing(FLOW_ARGS, __global const float4 *motion, CONTOUR_ARGS
     storeLanes(raw, g, n, maxSpacing * factor);
 }
 
-// Eq. 6 along the closed contour, then + ε and the clamp to d_max.
+// Eq. 6 along the closed contour, then + ε and the clamp to d_max; launched over one work-item per
+// VF_LANES vertices.
 VF_KERNEL void smoothSpacing(__global const float *raw, CONTOUR_ARGS, uint n, __constant float *weights, int radius,
                              float minSpacing, float maxSpacing, __global float *spacing)
 {
-    const uint i = get_global_id(0);
-    if (i >= n)
+    const uint g = get_global_id(0), first = VF_LANES * g, last = first + VF_LANES - 1;
+    if (first >= n)
         return;
-    const uint c = contourOf[i], first = contourOffset[c], count = contourCount[c];
-    float s = 0.0f;
-    if (i >= first + radius && i + radius < first + count) {
-        // Away from the contour's ends (all but 2·radius vertices of it): plain neighbours, which
-        // a CPU device loads as one vector rather than nine wrapped gathers.
+    const uint c = contourOf[first], from = contourOffset[c], to = from + contourCount[c];
+    floatv s = (floatv)(0.0f);
+    if (last < n && first >= from + radius && last + radius < to) {
+        // All lanes on one contour, away from its ends (all but 2·radius vertices of it): plain
+        // neighbours, one vector load per weight.
         for (int k = -radius; k <= radius; ++k)
-            s += weights[k + radius] * raw[i + k];
+            s += weights[k + radius] * VF_VLOAD(0, raw + first + k);
     } else {
-        for (int k = -radius; k <= radius; ++k)
-            s += weights[k + radius] * raw[stepAlong(i, k, first, count)];
+        float sums[VF_LANES];
+        for (int lane = 0; lane < VF_LANES; ++lane) {
+            const uint i = laneVertex(g, lane, n), d = contourOf[i];
+            float sum = 0.0f;
+            for (int k = -radius; k <= radius; ++k)
+                sum += weights[k + radius] * raw[stepAlong(i, k, contourOffset[d], contourCount[d])];
+            sums[lane] = sum;
+        }
+        s = VF_VLOAD(0, sums);
     }
-    spacing[i] = fmin(maxSpacing, s + minSpacing);
+    storeLanes(spacing, g, n, fmin(maxSpacing, s + minSpacing));
 }
