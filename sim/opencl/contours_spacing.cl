@@ -104,20 +104,22 @@ VF_KERNEL void gridScatter(__global const float4 *motion, CONTOUR_ARGS, uint n, 
 // float orders as the floats do, and gives the same result in any order). Four entries at a
 // time, branch-free: most candidates are the vertex's own neighbours along its contour, and a
 // branch per candidate would mispredict. Lanes past the run read the next entries (the array has
-// slack at the end) and are masked out.
-VF_INLINE float nearestInRun(__global const uint4 *entries, uint from, uint end, float2 p, float arc, uint contour,
-                             float length, float radius2, float best2, __global uint *gap2)
+// slack at the end) and are masked out. best2 keeps a minimum per lane, which the caller reduces
+// once, and minima are plain comparisons: no distance here is NaN (a non-finite position stops
+// the step before the spacing is computed).
+VF_INLINE float4 nearestInRun(__global const uint4 *entries, uint from, uint end, float2 p, float arc, uint contour,
+                              float length, float radius2, float4 best2, __global uint *gap2)
 {
     for (uint e = from; e < end; e += 4) {
         const uint16 q = vload16(0, (__global const uint *)(entries + e));
         const float4 dx = as_float4(q.s048c) - p.x, dy = as_float4(q.s159d) - p.y;
         const float4 dist2 = dx * dx + dy * dy;
         const float4 along = fabs(as_float4(q.s26ae) - arc);
-        const float4 way = fmin(along, length - along);
+        const float4 way = select(along, length - along, length - along < along);
         const int4 skip = ((q.s37bf == (uint4)(contour)) & (way * way <= 4.0f * dist2)) |
                           ((uint4)(e) + (uint4)(0, 1, 2, 3) >= (uint4)(end));
         const float4 nearest = select(dist2, (float4)(radius2), skip);
-        best2 = fmin(best2, fmin(fmin(nearest.x, nearest.y), fmin(nearest.z, nearest.w)));
+        best2 = select(best2, nearest, nearest < best2);
         if (any(nearest < (float4)(radius2))) {
             for (int k = 0; k < 4; ++k) {
                 const float d2 = k == 0 ? nearest.x : k == 1 ? nearest.y : k == 2 ? nearest.z : nearest.w;
@@ -153,7 +155,7 @@ VF_KERNEL void nearestOtherPart(GRID_ARGS, uint n, __global const uint *bucketSt
     const uint left = columnOf(GRID_PASS, cell.x - 1), right = columnOf(GRID_PASS, cell.x + 1);
     // This row: the rest of the entry's bucket and the next one, one run unless the row wraps.
     const uint row = rowStart(GRID_PASS, cell.y);
-    float best2 = radius2;
+    float4 best2 = (float4)(radius2);
     if (column < lastColumn) {
         best2 = nearestInRun(entries, self + 1, bucketStart[row + column + 2], p, arc, entry.w, length, radius2, best2,
                              gap2);
@@ -172,8 +174,10 @@ VF_KERNEL void nearestOtherPart(GRID_ARGS, uint n, __global const uint *bucketSt
         best2 = nearestInRun(entries, bucketStart[from], bucketStart[to + 1], p, arc, entry.w, length, radius2, best2,
                              gap2);
     }
-    if (best2 < radius2)
-        atomic_min(&gap2[self], as_uint(best2));
+    const float2 pairs = select(best2.xy, best2.zw, best2.zw < best2.xy);
+    const float nearest = pairs.y < pairs.x ? pairs.y : pairs.x;
+    if (nearest < radius2)
+        atomic_min(&gap2[self], as_uint(nearest));
 }
 
 // Menger curvature: 1 / radius of the circle through the three points (SpacingField), in lanes.
