@@ -10,9 +10,13 @@
 // (FLOW_ARGS in flow.h.cl) and samples through
 //     float2 flowVelocity(FLOW_PARAMS, float2 p, float s);
 //     float  flowVorticity(FLOW_PARAMS, float2 p, float s);
+// and, for VF_LANES points at once (the lane kernels, flow.h.cl),
+//     void   flowVelocityLanes(FLOW_PARAMS, floatv x, floatv y, float s, floatv* u, floatv* v);
+//     floatv flowVorticityLanes(FLOW_PARAMS, floatv x, floatv y, float s);
 // where s is how far through the span [t0, t0 + dt] (0 … 1; an empty span means its end). The
 // span's length is computed here in double: t1 − t0 in float would lose digits as time grows.
-// The program prepends one definition of these two functions: flow_fluid.cl (bilinear MAC
+// The program prepends one definition of these functions (a flow without lane samplers of its own
+// ends with VF_DEFINE_LANES_BY_LANE, which samples lane by lane): flow_fluid.cl (bilinear MAC
 // sampling, linear in time between t0 and t1, as sim/FluidFlow, with the halfway field after the
 // start field in u0 and v0 so that RK4's middle stages sample one field, not two, and the end
 // field's corner differences after it in u1 and v1 for its vorticity) or the analytic

@@ -8,7 +8,8 @@
 // (position, previous): the position now and at the start of the current motion, which the
 // time-rewinding split (eq. 2) needs.
 //
-// Requires flow.h.cl and a flow definition (flowVelocity, flowVorticity), and workgroup.cl.
+// Requires flow.h.cl and a flow definition (flowVelocity, flowVorticity and their lane forms,
+// FlowBinding.h), and workgroup.cl.
 
 typedef VF_ACC acc_t;  // accumulations: double where the device has fp64, else float
 typedef VF_ACC2 acc2;
@@ -119,18 +120,24 @@ VF_INLINE uint laneVertex(uint g, int k, uint n)
     return min(VF_LANES * g + (uint)k, n - 1);
 }
 
+// Whether every lane of work-item g holds a vertex.
+VF_INLINE bool wholeGroup(uint g, uint n)
+{
+    return VF_LANES * g + VF_LANES <= n;
+}
+
 // The first two floats of each lane's record in an array of 2 or 4 floats per vertex. A whole
 // group of lanes is one or two wide loads (VF_LANES is 8).
 VF_INLINE void lanesOf(__global const float *records, uint stride, uint g, uint n, floatv *x, floatv *y)
 {
     __global const float *group = records + stride * VF_LANES * g;
-    if (VF_LANES * g + VF_LANES <= n && stride == 4) {
+    if (wholeGroup(g, n) && stride == 4) {
         const float16 a = vload16(0, group), b = vload16(1, group);
         *x = (floatv)(a.s048c, b.s048c);
         *y = (floatv)(a.s159d, b.s159d);
         return;
     }
-    if (VF_LANES * g + VF_LANES <= n && stride == 2) {
+    if (wholeGroup(g, n) && stride == 2) {
         const float16 a = vload16(0, group);
         *x = a.even;
         *y = a.odd;
@@ -149,7 +156,7 @@ VF_INLINE void lanesOf(__global const float *records, uint stride, uint g, uint 
 // values[i] = each lane's value, for the lanes that hold a vertex.
 VF_INLINE void storeLanes(__global float *values, uint g, uint n, floatv v)
 {
-    if (VF_LANES * g + VF_LANES <= n) {
+    if (wholeGroup(g, n)) {
         VF_VSTORE(v, g, values);
         return;
     }
@@ -180,7 +187,7 @@ VF_KERNEL void advect(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, uint n, _
         rungeKutta4FromLanes(FLOW_PASS, x, y, k1x, k1y, &endX, &endY);
     }
     __global float4 *group = motion + VF_LANES * g;
-    if (VF_LANES * g + VF_LANES <= n && motionKind == MOTION_FLOW) {
+    if (wholeGroup(g, n) && motionKind == MOTION_FLOW) {
         if (!all(isfinite(endX) & isfinite(endY)))
             atomic_or(&status[STATUS_STICKY], FLAG_NON_FINITE);
         vstore16((float16)(endX.s0, endY.s0, x.s0, y.s0, endX.s1, endY.s1, x.s1, y.s1,

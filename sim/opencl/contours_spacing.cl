@@ -105,8 +105,9 @@ VF_KERNEL void gridScatter(__global const float4 *motion, CONTOUR_ARGS, uint n, 
 // time, branch-free: most candidates are the vertex's own neighbours along its contour, and a
 // branch per candidate would mispredict. Lanes past the run read the next entries (the array has
 // slack at the end) and are masked out. best2 keeps a minimum per lane, which the caller reduces
-// once, and minima are plain comparisons: no distance here is NaN (a non-finite position stops
-// the step before the spacing is computed).
+// once. Minima are plain comparisons: a NaN distance fails `<` and leaves the minimum as it was,
+// as fmin would (a step that moved a vertex to a non-finite position is thrown away when its next
+// refinement pass reads the status).
 VF_INLINE float4 nearestInRun(__global const uint4 *entries, uint from, uint end, float2 p, float arc, uint contour,
                               float length, float radius2, float4 best2, __global uint *gap2)
 {
@@ -235,7 +236,7 @@ VF_KERNEL void smoothSpacing(__global const float *raw, CONTOUR_ARGS, uint n, __
         return;
     const uint c = contourOf[first], from = contourOffset[c], to = from + contourCount[c];
     floatv s = (floatv)(0.0f);
-    if (last < n && first >= from + radius && last + radius < to) {
+    if (wholeGroup(g, n) && first >= from + radius && last + radius < to) {
         // All lanes on one contour, away from its ends (all but 2·radius vertices of it): plain
         // neighbours, one vector load per weight.
         for (int k = -radius; k <= radius; ++k)

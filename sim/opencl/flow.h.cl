@@ -11,12 +11,13 @@
 #define VF_INLINE inline __attribute__((always_inline))
 #endif
 
-// Lanes: a kernel that moves many vertices alike (advect, strain) gives each work-item VF_LANES
-// consecutive vertices as vectors, x and y apart. PoCL vectorises no work-item loop of those
-// kernels (LLVM's SLP pass turns neighbouring loads into float2 before PoCL's loop vectoriser
-// sees them, and that vectoriser refuses vector values), and RK4's four dependent samples leave a
-// CPU core waiting on latency. As eight lanes the same arithmetic runs about 2.7 times faster on
-// PoCL. DeviceContours's `lanes` (Launch.h) is the same number.
+// Lanes: a kernel that treats many vertices alike (advect, strain, rawSpacing, smoothSpacing)
+// gives each work-item VF_LANES consecutive vertices as vectors, x and y apart. PoCL vectorises no
+// work-item loop of those kernels (LLVM's SLP pass turns neighbouring loads into float2 before
+// PoCL's loop vectoriser sees them, and that vectoriser refuses vector values), and RK4's four
+// dependent samples leave a CPU core waiting on latency. As eight lanes the same arithmetic runs
+// about 2.7 times faster on PoCL. The lane code is written for eight (float8, and float16 loads of
+// whole groups in contours.cl); `lanes` in Launch.h is the same number.
 #define VF_LANES 8
 typedef float8 floatv;
 typedef int8 intv;

@@ -164,6 +164,10 @@ public:
     DeviceContours& device() { return m_contours; }
     const sim::ContourTracker& reference() const { return m_tracker; }
 
+    // The strain check of both for a step of dt from the current time.
+    double deviceStrain(double dt) { return m_contours.strainInSpacings(binding(m_time, m_time), dt); }
+    double referenceStrain(double dt) const { return m_tracker.strainInSpacings(m_host, m_referenceTime, dt); }
+
 private:
     FlowId m_flowId;
     sim::TrackingSettings m_settings;
@@ -265,6 +269,20 @@ std::size_t crossings(const std::vector<sim::Contour>& contours)
     return sim::countCrossings(all);
 }
 
+// n vertices on a circle, evenly over three quarters of it, so that one edge (a quarter circle's
+// chord) is much longer than the others; listed so that the long edge runs from vertex
+// `longAfter` to the next.
+Polygon withOneLongEdge(Vec2 centre, double radius, int n, int longAfter)
+{
+    Polygon p(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+        const int original = (k + n - 1 - longAfter) % n;  // original n − 1 → 0 is the long edge
+        const double a = 1.5 * std::numbers::pi * original / (n - 1);
+        p[std::size_t(k)] = centre + radius * Vec2(std::cos(a), std::sin(a));
+    }
+    return p;
+}
+
 double area(const std::vector<sim::Contour>& contours)
 {
     double a = 0.0;
@@ -293,6 +311,9 @@ private slots:
     void singleVortexReturns_data();
     void singleVortexReturns();
 
+    void strainMatchesReference_data();
+    void strainMatchesReference();
+    void smallContourMatchesReference();
     void runsAreBitIdentical();
     void strainSamplesAreTheFirstStage();
     void maxVerticesStopsCleanly();
@@ -454,6 +475,57 @@ void TestDeviceContours::singleVortexReturns()
             << pair.device().vertexCount();
     QVERIFY2(worstArea < areaTolerance, qPrintable(QStringLiteral("area error %1").arg(worstArea)));
     QVERIFY2(shape < 0.002, qPrintable(QStringLiteral("shape return %1").arg(shape)));
+}
+
+// The strain check against the reference's where its largest term is one edge: inside a work-item's
+// eight lanes, between two work-items, between two work-groups of 512 vertices, or a contour's
+// closing edge. In the contraction flow an edge's velocity difference is the edge itself, so the
+// strain is the longest edge's length · dt / d_max; small contours of 8 vertices stand before it.
+void TestDeviceContours::strainMatchesReference_data()
+{
+    QTest::addColumn<int>("fillers");   // 8-vertex contours before the one with the long edge
+    QTest::addColumn<int>("vertices");  // of the contour with the long edge
+    QTest::addColumn<int>("longAfter"); // its vertex where the long edge starts
+    QTest::newRow("within lanes (vertices 8, 9)") << 1 << 10 << 0;
+    QTest::newRow("between work-items (15, 16)") << 1 << 10 << 7;
+    QTest::newRow("between work-groups (511, 512)") << 63 << 20 << 7;
+    QTest::newRow("closing edge (20, 8)") << 1 << 13 << 12;
+}
+
+void TestDeviceContours::strainMatchesReference()
+{
+    QFETCH(int, fillers);
+    QFETCH(int, vertices);
+    QFETCH(int, longAfter);
+    const double dt = 0.01;
+    Pair pair(*m_device, FlowId::Contraction, tracking(1.0, false));
+    for (int k = 0; k < fillers; ++k)
+        pair.add(k, sim::circle({0.1 + 0.0008 * k, 0.1}, 0.0002, 1.0));  // 8 vertices each
+    pair.add(fillers, withOneLongEdge({0.5, 0.5}, 0.2, vertices, longAfter));
+    const double longEdge = 0.2 * std::sqrt(2.0);
+    const double device = pair.deviceStrain(dt), reference = pair.referenceStrain(dt);
+    QVERIFY2(std::abs(reference - longEdge * dt) <= 1e-12, qPrintable(QString::number(reference)));
+    QVERIFY2(std::abs(device - reference) <= 1e-5 * reference,
+             qPrintable(QStringLiteral("device %1, reference %2").arg(device).arg(reference)));
+}
+
+// A contour of five vertices fills part of one work-item's lanes; it turns with the rotation as
+// the reference's does, and keeps its vertices (its edges lie between half and all of d_max).
+void TestDeviceContours::smallContourMatchesReference()
+{
+    const double maxSpacing = 0.15;
+    Pair pair(*m_device, FlowId::Rotation, tracking(maxSpacing, false));
+    Polygon pentagon;
+    for (int k = 0; k < 5; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / 5;
+        pentagon.push_back(Vec2(0.5, 0.5) + 0.1 * Vec2(std::cos(a), std::sin(a)));  // edges 0.118
+    }
+    pair.add(0, pentagon);
+    for (int step = 0; step < 20; ++step)
+        pair.step(0.01);
+    QCOMPARE(pair.device().vertexCount(), std::size_t(5));
+    const Agreement a = compare(pair);
+    QVERIFY2(a.hausdorff <= 1e-5 && a.countDifference == 0.0, qPrintable(describe(a, pair)));
 }
 
 void TestDeviceContours::runsAreBitIdentical()

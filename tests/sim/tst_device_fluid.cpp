@@ -501,7 +501,8 @@ std::vector<double> TestDeviceFluid::sampleOnDevice(const FlowBinding& flow,
 
 // flowVelocityLanes and flowVorticityLanes, which advect the contours and set their spacing eight
 // vertices at a time, give bit for bit what flowVelocity and flowVorticity give for each of their
-// lanes, inside the canvas and clamped outside it, at every s that RK4 asks for and between them.
+// lanes, inside the canvas and clamped outside it (also from NaN, infinite and huge positions,
+// which must stay on the lattice), at every s that RK4 asks for and between them.
 void TestDeviceFluid::laneSamplingMatchesOnePoint()
 {
     const FluidSettings s = settings(20, 12, 2.0, 0.75, 0.0);
@@ -517,6 +518,12 @@ void TestDeviceFluid::laneSamplingMatchesOnePoint()
         const double x = -0.2 + 2.4 * (k % 29) / 28.0, y = -0.1 + 0.95 * (k % 31) / 30.0;
         points.insert(points.end(), {float(x), float(y), fractions[std::size_t(k / 8) % fractions.size()]});
     }
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const std::array<std::array<float, 2>, 8> bad{{{nan, 0.3f}, {0.3f, nan}, {inf, 0.2f}, {-inf, 0.5f},
+                                                  {1e30f, -1e30f}, {0.2f, inf}, {nan, nan}, {-1e30f, 0.4f}}};
+    for (const float fraction : fractions)
+        for (const auto& [x, y] : bad)
+            points.insert(points.end(), {x, y, fraction});
     const std::vector<double> one = sampleOnDevice(flow, points), lanes = sampleLanesOnDevice(flow, points);
     for (std::size_t k = 0; k < points.size(); k += 3) {
         QVERIFY2(lanes[k] == one[k] && lanes[k + 1] == one[k + 1] && lanes[k + 2] == one[k + 2],
