@@ -182,6 +182,8 @@ private slots:
 private:
     std::vector<double> sampleOnDevice(const FlowBinding& flow, const std::vector<float>& points);
     std::vector<double> sampleLanesOnDevice(const FlowBinding& flow, const std::vector<float>& points);
+    std::vector<double> runSampler(const FlowBinding& flow, const std::vector<float>& points, const char* kernel,
+                                   const char* name, int workItems);
 
     std::optional<Device> m_device;
 };
@@ -477,7 +479,7 @@ void TestDeviceFluid::flowSamplingMatchesReference()
 std::vector<double> TestDeviceFluid::sampleOnDevice(const FlowBinding& flow,
                                                     const std::vector<float>& points)
 {
-    const std::string source = opencl::joinedKernelSources({"flow.h.cl", "flow_fluid.cl"}) + R"(
+    return runSampler(flow, points, R"(
         __kernel void sample(FLOW_ARGS, __global const float* points, int n, __global float* out)
         {
             const int k = 3 * get_global_id(0);
@@ -488,14 +490,23 @@ std::vector<double> TestDeviceFluid::sampleOnDevice(const FlowBinding& flow,
             out[k] = velocity.x;
             out[k + 1] = velocity.y;
             out[k + 2] = flowVorticity(FLOW_PASS, p, points[k + 2]);
-        })";
-    cl::Kernel sample(m_device->build(source, "the sampling test kernel"), "sample");
+        })",
+                      "sample", int(points.size() / 3));
+}
+
+// Builds `kernel` (named `name`, taking the flow, the points, the work-item count and the output)
+// after flow_fluid.cl and runs it over `workItems` on `points`; returns what it wrote, as many
+// floats as there are in `points`.
+std::vector<double> TestDeviceFluid::runSampler(const FlowBinding& flow, const std::vector<float>& points,
+                                                const char* kernel, const char* name, int workItems)
+{
+    const std::string source = opencl::joinedKernelSources({"flow.h.cl", "flow_fluid.cl"}) + kernel;
+    cl::Kernel sample(m_device->build(source, std::string("the test kernel ") + name), name);
     const std::size_t bytes = points.size() * sizeof(float);
     cl::Buffer in(m_device->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
                   const_cast<float*>(points.data()));
     cl::Buffer out(m_device->context(), CL_MEM_WRITE_ONLY, bytes);
-    const int n = int(points.size() / 3);
-    opencl::launch(m_device->queue(), sample, n, flow, in, n, out);
+    opencl::launch(m_device->queue(), sample, std::size_t(workItems), flow, in, workItems, out);
     return readBuffer(*m_device, out, points.size());
 }
 
@@ -545,7 +556,7 @@ void TestDeviceFluid::laneSamplingMatchesOnePoint()
 // the s of the first), sampled by flowVelocityLanes and flowVorticityLanes a group at a time.
 std::vector<double> TestDeviceFluid::sampleLanesOnDevice(const FlowBinding& flow, const std::vector<float>& points)
 {
-    const std::string source = opencl::joinedKernelSources({"flow.h.cl", "flow_fluid.cl"}) + R"(
+    return runSampler(flow, points, R"(
         __kernel void sampleLanes(FLOW_ARGS, __global const float* points, int groups, __global float* out)
         {
             const int g = get_global_id(0);
@@ -569,15 +580,8 @@ std::vector<double> TestDeviceFluid::sampleLanesOnDevice(const FlowBinding& flow
                 out[3 * (VF_LANES * g + k) + 1] = vs[k];
                 out[3 * (VF_LANES * g + k) + 2] = ws[k];
             }
-        })";
-    cl::Kernel sample(m_device->build(source, "the lane sampling test kernel"), "sampleLanes");
-    const std::size_t bytes = points.size() * sizeof(float);
-    cl::Buffer in(m_device->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
-                  const_cast<float*>(points.data()));
-    cl::Buffer out(m_device->context(), CL_MEM_WRITE_ONLY, bytes);
-    const int groups = int(points.size() / 3 / opencl::lanes);
-    opencl::launch(m_device->queue(), sample, std::size_t(groups), flow, in, groups, out);
-    return readBuffer(*m_device, out, points.size());
+        })",
+                      "sampleLanes", int(points.size() / 3 / opencl::lanes));
 }
 
 void TestDeviceFluid::badInputThrows()
