@@ -388,9 +388,10 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
 {
     const auto n = cl_uint(vertices);
     queue.enqueueFillBuffer(work, cl_uint(0), 0, (g.buckets() + 1) * sizeof(cl_uint));
-    launch(queue, arcTilesAndCount, vertices + 1, front.motion, front.contour, contourOffset, contourCount, n, g,
-           back.spacing, tileTotals, cl_uint(tiles()), work, tileOffset);
-    sumScan.exclusive(tileTotals, tiles() + 1);
+    const std::size_t groups = laneGroups(vertices + 1), arcTiles = roundUpToLocal(groups) / localSize;
+    launch(queue, arcTilesAndCount, groups, front.motion, front.contour, contourOffset, contourCount, n, g,
+           back.spacing, tileTotals, cl_uint(arcTiles), work, tileOffset);
+    sumScan.exclusive(tileTotals, arcTiles + 1);
     countScan.exclusive(work, g.buckets() + 1);
     launch(queue, gridScatter, vertices, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
            tileTotals, g, work, tileOffset, back.motion, contourLength, back.contour);

@@ -126,21 +126,27 @@ VF_INLINE bool wholeGroup(uint g, uint n)
     return VF_LANES * g + VF_LANES <= n;
 }
 
-// The first two floats of each lane's record in an array of 2 or 4 floats per vertex. A whole
-// group of lanes is one or two wide loads (VF_LANES is 8).
-VF_INLINE void lanesOf(__global const float *records, uint stride, uint g, uint n, floatv *x, floatv *y)
+// The first two floats of the VF_LANES (8) records from `first` on, in an array of 2 or 4 floats
+// per vertex: one or two wide loads.
+VF_INLINE void consecutiveLanes(__global const float *records, uint stride, uint first, floatv *x, floatv *y)
 {
-    __global const float *group = records + stride * VF_LANES * g;
-    if (wholeGroup(g, n) && stride == 4) {
+    __global const float *group = records + stride * first;
+    if (stride == 4) {
         const float16 a = vload16(0, group), b = vload16(1, group);
         *x = (floatv)(a.s048c, b.s048c);
         *y = (floatv)(a.s159d, b.s159d);
-        return;
-    }
-    if (wholeGroup(g, n) && stride == 2) {
+    } else {
         const float16 a = vload16(0, group);
         *x = a.even;
         *y = a.odd;
+    }
+}
+
+// The first two floats of each lane's record in an array of 2 or 4 floats per vertex.
+VF_INLINE void lanesOf(__global const float *records, uint stride, uint g, uint n, floatv *x, floatv *y)
+{
+    if (wholeGroup(g, n)) {
+        consecutiveLanes(records, stride, VF_LANES * g, x, y);
         return;
     }
     float xs[VF_LANES], ys[VF_LANES];

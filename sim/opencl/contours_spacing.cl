@@ -39,36 +39,72 @@ VF_INLINE uint bucketOf(GRID_ARGS, int2 cell)
     return rowStart(GRID_PASS, cell.y) + columnOf(GRID_PASS, cell.x);
 }
 
-// Edge lengths to the next vertex, summed within each tile of VF_LOCAL vertices (exclusive), and
-// each tile's total for the scan; also the grid's per-bucket counts and each vertex's rank in its
-// bucket. Runs over n + 1 vertices so that the prefix at n exists. Counts and ranks come from
-// atomics: the counts do not depend on the order in which work-items arrive, the ranks do (see
-// gridScatter).
+// Arc lengths are summed in tiles of VF_ARC_TILE vertices: a work-group of lane work-items.
+#define VF_ARC_TILE (VF_LOCAL * VF_LANES)
+
+// Edge lengths to the next vertex, summed within each arc tile (exclusive), and each tile's total
+// for the scan; also the grid's per-bucket counts and each vertex's rank in its bucket. Launched
+// over one work-item per VF_LANES of the n + 1 vertices, so that the prefix at n exists; lengths
+// and cells are computed in lanes. Counts and ranks come from atomics: the counts do not depend on
+// the order in which work-items arrive, the ranks do (see gridScatter).
 VF_KERNEL void arcTilesAndCount(__global const float4 *motion, CONTOUR_ARGS, uint n, GRID_ARGS,
                                 __global float *tileArc, __global acc_t *tileTotals, uint tiles,
                                 __global uint *bucketCounts, __global uint *rank)
 {
     __local float scratch[VF_SCAN_SCRATCH];
-    const uint i = get_global_id(0);
-    float length = 0.0f;
-    if (i < n) {
-        const uint c = contourOf[i];
-        const float2 p = motion[i].xy;
-        length = distance(p, motion[nextIn(i, contourOffset[c], contourCount[c])].xy);
-        rank[i] = atomic_inc(&bucketCounts[bucketOf(GRID_PASS, cellOf(cellSize, p))]);
+    const uint g = get_global_id(0), first = VF_LANES * g;
+    float lengths[VF_LANES] = {0.0f};
+    if (first < n) {
+        __global const float *positions = (__global const float *)motion;
+        floatv x, y, nextX, nextY;
+        lanesOf(positions, 4, g, n, &x, &y);
+        if (first + VF_LANES < n && contourOf[first] == contourOf[first + VF_LANES]) {
+            // All lanes on one contour that goes on past them: each next vertex is the next lane.
+            consecutiveLanes(positions, 4, first + 1, &nextX, &nextY);
+        } else {
+            float nexts[2][VF_LANES];
+            for (int k = 0; k < VF_LANES; ++k) {
+                const uint i = laneVertex(g, k, n), c = contourOf[i];
+                const float4 m = motion[nextIn(i, contourOffset[c], contourCount[c])];
+                nexts[0][k] = m.x;
+                nexts[1][k] = m.y;
+            }
+            nextX = VF_VLOAD(0, nexts[0]);
+            nextY = VF_VLOAD(0, nexts[1]);
+        }
+        const floatv dx = nextX - x, dy = nextY - y;
+        VF_VSTORE(sqrt(dx * dx + dy * dy), 0, lengths);
+        // cellOf and bucketOf in lanes.
+        const intv cellX = VF_CONVERT_INTV(clamp(floor(x / cellSize), -1e9f, 1e9f));
+        const intv cellY = VF_CONVERT_INTV(clamp(floor(y / cellSize), -1e9f, 1e9f));
+        const intv buckets = ((cellY & (intv)((1 << rowBits) - 1)) << (intv)(columnBits))
+                           + (cellX & (intv)((1 << columnBits) - 1));
+        int bucket[VF_LANES];
+        VF_VSTORE(buckets, 0, bucket);
+        for (int k = 0; k < VF_LANES && first + k < n; ++k)
+            rank[first + k] = atomic_inc(&bucketCounts[bucket[k]]);
+        for (int k = 0; k < VF_LANES; ++k)
+            lengths[k] = first + k < n ? lengths[k] : 0.0f;
+    }
+    float before[VF_LANES], sum = 0.0f;
+    for (int k = 0; k < VF_LANES; ++k) {
+        before[k] = sum;
+        sum += lengths[k];
     }
     float total;
-    tileArc[i] = VF_LOCAL_SCAN(float)(scratch, length, &total);
+    const float tileBefore = VF_LOCAL_SCAN(float)(scratch, sum, &total);
+    for (int k = 0; k < VF_LANES && first + k <= n; ++k)
+        tileArc[first + k] = tileBefore + before[k];
     if (get_local_id(0) == 0)
         tileTotals[get_group_id(0)] = total;
-    if (i == 0)
+    if (g == 0)
         tileTotals[tiles] = 0;  // the scan leaves the grand total here
 }
 
 // Sum of the edge lengths before vertex i in the whole store.
 VF_INLINE acc_t arcBefore(__global const float *tileArc, __global const acc_t *tilePrefix, uint i)
 {
-    return tilePrefix[i / VF_LOCAL] + (acc_t)tileArc[i];
+    return tilePrefix[i / VF_ARC_TILE] + (acc_t)tileArc[i];
 }
 
 // Counting sort, second half: bucketStart is the exclusive scan of the counts, and every vertex
