@@ -393,7 +393,7 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
            back.spacing, tileTotals, cl_uint(arcTiles), work, tileOffset);
     sumScan.exclusive(tileTotals, arcTiles + 1);
     countScan.exclusive(work, g.buckets() + 1);
-    launch(queue, gridScatter, vertices, front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
+    launch(queue, gridScatter, laneGroups(vertices), front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
            tileTotals, g, work, tileOffset, back.motion, contourLength, back.contour);
 }
 

@@ -39,6 +39,15 @@ VF_INLINE uint bucketOf(GRID_ARGS, int2 cell)
     return rowStart(GRID_PASS, cell.y) + columnOf(GRID_PASS, cell.x);
 }
 
+// bucketOf(cellOf(p)) for each lane's p = (x, y), into `buckets`.
+VF_INLINE void bucketLanes(GRID_ARGS, floatv x, floatv y, int *buckets)
+{
+    const intv cellX = VF_CONVERT_INTV(clamp(floor(x / cellSize), -1e9f, 1e9f));
+    const intv cellY = VF_CONVERT_INTV(clamp(floor(y / cellSize), -1e9f, 1e9f));
+    VF_VSTORE(((cellY & (intv)((1 << rowBits) - 1)) << (intv)(columnBits)) + (cellX & (intv)((1 << columnBits) - 1)),
+              0, buckets);
+}
+
 // Arc lengths are summed in tiles of VF_ARC_TILE vertices: a work-group of lane work-items.
 #define VF_ARC_TILE (VF_LOCAL * VF_LANES)
 
@@ -74,13 +83,8 @@ VF_KERNEL void arcTilesAndCount(__global const float4 *motion, CONTOUR_ARGS, uin
         }
         const floatv dx = nextX - x, dy = nextY - y;
         VF_VSTORE(sqrt(dx * dx + dy * dy), 0, lengths);
-        // cellOf and bucketOf in lanes.
-        const intv cellX = VF_CONVERT_INTV(clamp(floor(x / cellSize), -1e9f, 1e9f));
-        const intv cellY = VF_CONVERT_INTV(clamp(floor(y / cellSize), -1e9f, 1e9f));
-        const intv buckets = ((cellY & (intv)((1 << rowBits) - 1)) << (intv)(columnBits))
-                           + (cellX & (intv)((1 << columnBits) - 1));
         int bucket[VF_LANES];
-        VF_VSTORE(buckets, 0, bucket);
+        bucketLanes(GRID_PASS, x, y, bucket);
         for (int k = 0; k < VF_LANES && first + k < n; ++k)
             rank[first + k] = atomic_inc(&bucketCounts[bucket[k]]);
         for (int k = 0; k < VF_LANES; ++k)
@@ -119,19 +123,27 @@ VF_KERNEL void gridScatter(__global const float4 *motion, CONTOUR_ARGS, uint n, 
                            __global uint *rankThenSlot, __global uint4 *entries, __global float *contourLength,
                            __global uint *gap2)
 {
-    const uint i = get_global_id(0);
-    if (i >= n)
+    const uint g = get_global_id(0);
+    if (VF_LANES * g >= n)
         return;
-    const uint c = contourOf[i], first = contourOffset[c];
-    const acc_t start = arcBefore(tileArc, tilePrefix, first);
-    const float arc = (float)(arcBefore(tileArc, tilePrefix, i) - start);
-    if (i == first)
-        contourLength[c] = (float)(arcBefore(tileArc, tilePrefix, first + contourCount[c]) - start);
-    const float2 p = motion[i].xy;
-    const uint slot = bucketStart[bucketOf(GRID_PASS, cellOf(cellSize, p))] + rankThenSlot[i];
-    entries[slot] = (uint4)(as_uint(p.x), as_uint(p.y), as_uint(arc), c);
-    gap2[slot] = as_uint(cellSize * cellSize);
-    rankThenSlot[i] = slot;
+    floatv x, y;
+    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
+    int bucket[VF_LANES];
+    bucketLanes(GRID_PASS, x, y, bucket);
+    float xs[VF_LANES], ys[VF_LANES];
+    VF_VSTORE(x, 0, xs);
+    VF_VSTORE(y, 0, ys);
+    for (int k = 0; k < VF_LANES && VF_LANES * g + k < n; ++k) {
+        const uint i = VF_LANES * g + k, c = contourOf[i], first = contourOffset[c];
+        const acc_t start = arcBefore(tileArc, tilePrefix, first);
+        const float arc = (float)(arcBefore(tileArc, tilePrefix, i) - start);
+        if (i == first)
+            contourLength[c] = (float)(arcBefore(tileArc, tilePrefix, first + contourCount[c]) - start);
+        const uint slot = bucketStart[bucket[k]] + rankThenSlot[i];
+        entries[slot] = (uint4)(as_uint(xs[k]), as_uint(ys[k]), as_uint(arc), c);
+        gap2[slot] = as_uint(cellSize * cellSize);
+        rankThenSlot[i] = slot;
+    }
 }
 
 // The candidates of one run of entries [from, end) for the entry (p, arc, contour) of a contour of
