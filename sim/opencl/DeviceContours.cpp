@@ -504,7 +504,7 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
         markActiveTiles();
         pass = countSplits(flow, motion);  // the counts lived in the scratch that reserve() replaced
     }
-    launch(queue, splitScatter, vertices, flow, motion, front.motion, front.spacing, front.contour, contourOffset,
+    launch(queue, splitScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour, contourOffset,
            contourCount, cl_uint(vertices), tileActive, tileOffset, tileTotals, back.motion, back.spacing, back.contour,
            status);
     adopt(pass.total);
@@ -527,12 +527,12 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
         countScan.exclusive(tileTotals, tiles() + 1);
         const Pass pass = readPass();
         if (pass.changed) {
-            launch(queue, collapseScatter, vertices, flow, motion, front.motion, front.spacing, front.contour,
+            launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour,
                    contourOffset, contourCount, cl_uint(vertices), tileActive, work, tileOffset, tileTotals,
                    back.motion, back.spacing, back.contour);
             adopt(pass.total);
         } else if (pass.flags & flagRecentred) {
-            launch(queue, recentreInPlace, vertices, flow, motion, front.motion, front.spacing, front.contour,
+            launch(queue, recentreInPlace, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour,
                    contourOffset, contourCount, cl_uint(vertices), tileActive, work);
         }
         changed = changed || pass.changed || (pass.flags & flagRecentred);

@@ -128,6 +128,18 @@ VF_INLINE uint shortEdgeFlags(uint k, uint count)
 #define CONST_VERTEX_SET(prefix)                                                               \
     __global const float4 *prefix##Motion, __global const float *prefix##Spacing, __global const uint *prefix##Contour
 
+// The scatter kernels run over one work-item per VF_LANES vertices (a tile holds whole groups of
+// them). A group whose vertices all stay, one to one, lands as one block: wide loads and stores.
+VF_INLINE void copyLanes(CONST_VERTEX_SET(in), uint first, VERTEX_SET(out), uint at)
+{
+    __global const float *from = (__global const float *)(inMotion + first);
+    __global float *to = (__global float *)(outMotion + at);
+    vstore16(vload16(0, from), 0, to);
+    vstore16(vload16(1, from), 1, to);
+    vstore8(vload8(0, inSpacing + first), 0, outSpacing + at);
+    vstore8(vload8(0, inContour + first), 0, outContour + at);
+}
+
 // Per vertex: 1 + the vertices its edge to the next one gets. Also flags short edges by the colours
 // of their ends, so the host can skip the collapse passes that would find nothing to do, and a
 // split stopped by the depth cap.
@@ -172,23 +184,30 @@ VF_KERNEL void splitScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __glob
                             __global const uint *contourCount, uint n, TILE_ARGS, __global const uint *tileOffset,
                             __global const uint *tileBase, VERTEX_SET(out), __global uint *status)
 {
-    const uint i = get_global_id(0);
-    if (i >= n)
+    const uint g = get_global_id(0), first = VF_LANES * g;
+    if (first >= n)
         return;
-    const uint at = scannedOffset(tileActive, tileOffset, tileBase, i);
-    const uint expected = scannedOffset(tileActive, tileOffset, tileBase, i + 1) - at - 1;
-    const uint c = inContour[i];
-    outMotion[at] = inMotion[i];
-    outSpacing[at] = inSpacing[i];
-    outContour[at] = c;
-    if (expected == 0)
+    const uint groupAt = scannedOffset(tileActive, tileOffset, tileBase, first);
+    if (wholeGroup(g, n) && scannedOffset(tileActive, tileOffset, tileBase, first + VF_LANES) - groupAt == VF_LANES) {
+        copyLanes(inMotion, inSpacing, inContour, first, outMotion, outSpacing, outContour, groupAt);
         return;
-    const uint j = nextIn(i, contourOffset[c], contourCount[c]);
-    bool capped = false;
-    const uint inserted = splitEdge(FLOW_PASS, MOTION_PASS, inMotion[i], inMotion[j], inSpacing[i], inSpacing[j],
-                                    outMotion, outSpacing, outContour, at + 1, expected, c, &capped);
-    if (inserted != expected)
-        atomic_or(&status[STATUS_STICKY], FLAG_SPLIT_MISMATCH);  // a bug, reported by the host
+    }
+    for (uint i = first; i < min(first + VF_LANES, n); ++i) {
+        const uint at = scannedOffset(tileActive, tileOffset, tileBase, i);
+        const uint expected = scannedOffset(tileActive, tileOffset, tileBase, i + 1) - at - 1;
+        const uint c = inContour[i];
+        outMotion[at] = inMotion[i];
+        outSpacing[at] = inSpacing[i];
+        outContour[at] = c;
+        if (expected == 0)
+            continue;
+        const uint j = nextIn(i, contourOffset[c], contourCount[c]);
+        bool capped = false;
+        const uint inserted = splitEdge(FLOW_PASS, MOTION_PASS, inMotion[i], inMotion[j], inSpacing[i], inSpacing[j],
+                                        outMotion, outSpacing, outContour, at + 1, expected, c, &capped);
+        if (inserted != expected)
+            atomic_or(&status[STATUS_STICKY], FLAG_SPLIT_MISMATCH);  // a bug, reported by the host
+    }
 }
 
 // After a scatter: where each contour now starts and how many vertices it has.
@@ -316,31 +335,45 @@ VF_KERNEL void collapseScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __g
                                __global const uint *contourCount, uint n, TILE_ARGS, __global const uint *action,
                                __global const uint *tileOffset, __global const uint *tileBase, VERTEX_SET(out))
 {
-    const uint i = get_global_id(0);
-    if (i >= n)
+    const uint g = get_global_id(0), first = VF_LANES * g;
+    if (first >= n)
         return;
-    const uint act = tileActive[i / VF_LOCAL] ? action[i] : ACTION_KEEP;  // skipped tiles wrote none
-    if (act == ACTION_DELETE)
+    const bool active = tileActive[first / VF_LOCAL];  // skipped tiles wrote no actions
+    if (wholeGroup(g, n) && !(active && any(vload8(0, action + first) != (uint8)(ACTION_KEEP)))) {
+        copyLanes(inMotion, inSpacing, inContour, first, outMotion, outSpacing, outContour,
+                  scannedOffset(tileActive, tileOffset, tileBase, first));
         return;
-    const uint at = scannedOffset(tileActive, tileOffset, tileBase, i), c = inContour[i];
-    outContour[at] = c;
-    if (act == ACTION_RECENTRE) {
-        writeRecentred(FLOW_PASS, MOTION_PASS, inMotion, inSpacing, i, contourOffset[c], contourCount[c], outMotion,
-                       outSpacing, at);
-    } else {
-        outMotion[at] = inMotion[i];
-        outSpacing[at] = inSpacing[i];
+    }
+    for (uint i = first; i < min(first + VF_LANES, n); ++i) {
+        const uint act = active ? action[i] : ACTION_KEEP;
+        if (act == ACTION_DELETE)
+            continue;
+        const uint at = scannedOffset(tileActive, tileOffset, tileBase, i), c = inContour[i];
+        outContour[at] = c;
+        if (act == ACTION_RECENTRE) {
+            writeRecentred(FLOW_PASS, MOTION_PASS, inMotion, inSpacing, i, contourOffset[c], contourCount[c],
+                           outMotion, outSpacing, at);
+        } else {
+            outMotion[at] = inMotion[i];
+            outSpacing[at] = inSpacing[i];
+        }
     }
 }
 
 // A collapse pass that only recentres needs no compaction: recentred vertices move in place
-// (their neighbours do not act in the same pass, so nothing they read changes).
+// (their neighbours do not act in the same pass, so nothing they read changes). One work-item per
+// VF_LANES vertices.
 VF_KERNEL void recentreInPlace(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, __global float *spacing, CONTOUR_ARGS,
                                uint n, TILE_ARGS, __global const uint *action)
 {
-    const uint i = get_global_id(0);
-    if (i >= n || !tileActive[i / VF_LOCAL] || action[i] != ACTION_RECENTRE)
+    const uint first = VF_LANES * get_global_id(0);
+    if (first >= n || !tileActive[first / VF_LOCAL])
         return;
-    const uint c = contourOf[i];
-    writeRecentred(FLOW_PASS, MOTION_PASS, motion, spacing, i, contourOffset[c], contourCount[c], motion, spacing, i);
+    for (uint i = first; i < min(first + VF_LANES, n); ++i) {
+        if (action[i] != ACTION_RECENTRE)
+            continue;
+        const uint c = contourOf[i];
+        writeRecentred(FLOW_PASS, MOTION_PASS, motion, spacing, i, contourOffset[c], contourCount[c], motion, spacing,
+                       i);
+    }
 }
