@@ -484,7 +484,7 @@ void DeviceContours::Impl::adopt(std::size_t total)
 DeviceContours::Impl::Pass DeviceContours::Impl::countSplits(const FlowBinding& flow, const Motion& motion)
 {
     clearPassFlags();
-    launch(queue, splitCount, vertices + 1, flow, motion, front.motion, front.spacing, front.contour, contourOffset,
+    launch(queue, splitCount, laneGroups(vertices + 1), flow, motion, front.motion, front.spacing, front.contour, contourOffset,
            contourCount, cl_uint(vertices), tileActive, contourChanged, contourCollapsing, tileOffset, tileTotals,
            cl_uint(tiles()), status);
     countScan.exclusive(tileTotals, tiles() + 1);
@@ -521,7 +521,7 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
         if (!(colours & (1u << colour)))
             continue;
         clearPassFlags();
-        launch(queue, collapseDecide, vertices + 1, front.motion, front.spacing, front.contour, contourOffset,
+        launch(queue, collapseDecide, laneGroups(vertices + 1), front.motion, front.spacing, front.contour, contourOffset,
                contourCount, cl_uint(vertices), colour, tileActive, contourChanged, work, tileOffset, tileTotals,
                cl_uint(tiles()), status);
         countScan.exclusive(tileTotals, tiles() + 1);

@@ -23,15 +23,35 @@ VF_INLINE uint scannedOffset(TILE_ARGS, __global const uint *tileOffset, __globa
     return tileBase[tile] + (tileActive[tile] ? tileOffset[i] : i % VF_LOCAL);
 }
 
-// A counting kernel's work-group over a skipped tile: the tile's total (all n + 1 work-items of a
-// counting kernel lie in tiles; item n produces nothing). True when the tile is skipped.
-VF_INLINE bool skippedTile(TILE_ARGS, uint n, __global uint *tileTotals, uint tiles)
+// The counting kernels run over one work-item per VF_LANES of the n + 1 vertices (vertex n produces
+// nothing; its offset is the count before it in its tile), so a tile is TILE_ITEMS work-items and
+// a work-group VF_LANES tiles.
+#define TILE_ITEMS (VF_LOCAL / VF_LANES)
+
+// Whether this work-item's tile is looked at (work-items past vertex n lie in no tile).
+VF_INLINE bool inActiveTile(TILE_ARGS, uint n)
 {
-    const uint tile = get_group_id(0);
-    if (tileActive[tile])
-        return false;
-    if (get_local_id(0) == 0)
-        tileTotals[tile] = min((uint)VF_LOCAL, n - tile * VF_LOCAL);
+    const uint first = VF_LANES * get_global_id(0);
+    return first <= n && tileActive[first / VF_LOCAL];
+}
+
+// A tile that is not looked at keeps its vertices one to one: its total is its vertex count.
+VF_INLINE uint skippedTileTotal(uint tile, uint n)
+{
+    return min((uint)VF_LOCAL, n - tile * VF_LOCAL);
+}
+
+// A counting kernel's work-group none of whose tiles is looked at: their totals. True then (the
+// same for the whole work-group, which returns before its barriers).
+VF_INLINE bool skippedGroup(TILE_ARGS, uint n, __global uint *tileTotals, uint tiles)
+{
+    const uint groupFirstTile = get_group_id(0) * VF_LANES, lid = get_local_id(0);
+    for (uint t = groupFirstTile; t < min(groupFirstTile + VF_LANES, tiles); ++t)
+        if (tileActive[t])
+            return false;
+    const uint tile = VF_LANES * get_global_id(0) / VF_LOCAL;
+    if (lid % TILE_ITEMS == 0 && tile < tiles)
+        tileTotals[tile] = skippedTileTotal(tile, n);
     if (get_global_id(0) == 0)
         tileTotals[tiles] = 0;
     return true;
@@ -49,16 +69,31 @@ VF_KERNEL void markActiveTiles(__global const uint *contourOffset, __global cons
         tileActive[tile] = 1;  // a plain store: every writer writes the same value
 }
 
-// Leaves the per-tile offsets and totals of `produced` (see above); all work-items must call it.
-VF_INLINE void scanTile(__local uint *scratch, uint produced, __global uint *tileOffset, __global uint *tileTotals,
-                        uint tiles)
+// Leaves, from the counts `produced` of this work-item's lanes, each vertex's offset within its tile
+// (tiles looked at only) and each tile's total; all work-items of the group must call it.
+// `itemBefore` holds VF_LOCAL entries.
+VF_INLINE void scanTiles(__local uint *scratch, __local uint *itemBefore, const uint *produced, bool active, uint n,
+                         __global uint *tileOffset, __global uint *tileTotals, uint tiles)
 {
-    const uint i = get_global_id(0);
+    const uint lid = get_local_id(0), first = VF_LANES * get_global_id(0), tile = first / VF_LOCAL;
+    uint before[VF_LANES], sum = 0;
+    for (int k = 0; k < VF_LANES; ++k) {
+        before[k] = sum;
+        sum += produced[k];
+    }
     uint total;
-    tileOffset[i] = VF_LOCAL_SCAN(uint)(scratch, produced, &total);
-    if (get_local_id(0) == 0)
-        tileTotals[get_group_id(0)] = total;
-    if (i == 0)
+    itemBefore[lid] = VF_LOCAL_SCAN(uint)(scratch, sum, &total);
+    barrier(CLK_LOCAL_MEM_FENCE);
+    const uint tileItem = lid - lid % TILE_ITEMS, nextTileItem = tileItem + TILE_ITEMS;
+    const uint tileStart = itemBefore[tileItem];
+    if (active) {
+        for (int k = 0; k < VF_LANES && first + k <= n; ++k)
+            tileOffset[first + k] = itemBefore[lid] - tileStart + before[k];
+    }
+    if (lid == tileItem && tile < tiles)
+        tileTotals[tile] = active ? (nextTileItem < VF_LOCAL ? itemBefore[nextTileItem] : total) - tileStart
+                                  : skippedTileTotal(tile, n);
+    if (first == 0)
         tileTotals[tiles] = 0;  // the scan leaves the new vertex count here
 }
 
@@ -147,24 +182,30 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
                           __global const uint *contourCount, uint n, TILE_ARGS, __global uint *contourChanged,
                           __global uint *contourCollapsing, __global uint *tileOffset, __global uint *tileTotals, uint tiles, __global uint *status)
 {
-    __local uint scratch[VF_SCAN_SCRATCH];
+    __local uint scratch[VF_SCAN_SCRATCH], itemBefore[VF_LOCAL];
     __local uint groupFlags;
-    if (skippedTile(tileActive, n, tileTotals, tiles))
+    if (skippedGroup(tileActive, n, tileTotals, tiles))
         return;
-    const uint i = get_global_id(0);
+    const uint first = VF_LANES * get_global_id(0);
+    const bool active = inActiveTile(tileActive, n);
     if (get_local_id(0) == 0)
         groupFlags = 0;
     barrier(CLK_LOCAL_MEM_FENCE);
-    uint produced = 0;
-    if (i < n) {
+    uint produced[VF_LANES];
+    for (int k = 0; k < VF_LANES; ++k) {
+        const uint i = first + k;
+        produced[k] = 0;
+        if (!active || i >= n)
+            continue;
         const uint c = inContour[i], count = contourCount[c];
         const uint j = nextIn(i, contourOffset[c], count);
         const float4 a = inMotion[i], b = inMotion[j];
         const float length = distance(a.xy, b.xy), spacing = 0.5f * (inSpacing[i] + inSpacing[j]);
-        produced = 1;
+        produced[k] = 1;
         bool capped = false;
         if (length > spacing) {
-            produced += splitEdge(FLOW_PASS, MOTION_PASS, a, b, inSpacing[i], inSpacing[j], 0, 0, 0, 0, 0, c, &capped);
+            produced[k] += splitEdge(FLOW_PASS, MOTION_PASS, a, b, inSpacing[i], inSpacing[j], 0, 0, 0, 0, 0, c,
+                                     &capped);
             contourChanged[c] = 1;  // plain stores: every writer writes the same value
             contourCollapsing[c] = 1;
         }
@@ -175,7 +216,7 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
             contourCollapsing[c] = 1;
         }
     }
-    scanTile(scratch, produced, tileOffset, tileTotals, tiles);
+    scanTiles(scratch, itemBefore, produced, active, n, tileOffset, tileTotals, tiles);
     if (get_local_id(0) == 0 && groupFlags)
         atomic_or(&status[STATUS_PASS], groupFlags);
 }
@@ -266,24 +307,30 @@ VF_KERNEL void collapseDecide(__global const float4 *motion, __global const floa
                               __global uint *tileOffset, __global uint *tileTotals, uint tiles,
                               __global uint *status)
 {
-    __local uint scratch[VF_SCAN_SCRATCH];
+    __local uint scratch[VF_SCAN_SCRATCH], itemBefore[VF_LOCAL];
     __local uint groupFlags;
-    if (skippedTile(tileActive, n, tileTotals, tiles))
+    if (skippedGroup(tileActive, n, tileTotals, tiles))
         return;
-    const uint i = get_global_id(0);
+    const uint first = VF_LANES * get_global_id(0);
+    const bool active = inActiveTile(tileActive, n);
     if (get_local_id(0) == 0)
         groupFlags = 0;
     barrier(CLK_LOCAL_MEM_FENCE);
-    uint act = ACTION_KEEP;
-    if (i < n) {
-        const uint c = contourOf[i], first = contourOffset[c], count = contourCount[c], k = i - first;
+    uint kept[VF_LANES];
+    for (int lane = 0; lane < VF_LANES; ++lane) {
+        const uint i = first + lane;
+        kept[lane] = 0;
+        if (!active || i >= n)
+            continue;
+        uint act = ACTION_KEEP;
+        const uint c = contourOf[i], from = contourOffset[c], count = contourCount[c], k = i - from;
         if (count > 3 && collapseColour(k, count) == colour) {
-            act = collapseAction(motion, spacing, i, first, count);
+            act = collapseAction(motion, spacing, i, from, count);
             if (count == 4 && k >= 2 && act == ACTION_DELETE &&
-                collapseAction(motion, spacing, i - 2, first, count) == ACTION_DELETE)
+                collapseAction(motion, spacing, i - 2, from, count) == ACTION_DELETE)
                 act = ACTION_KEEP;
         }
-        const uint j = nextIn(i, first, count);
+        const uint j = nextIn(i, from, count);
         if (count > 3 && distance(motion[i].xy, motion[j].xy) < 0.25f * (spacing[i] + spacing[j]))
             atomic_or(&groupFlags, shortEdgeFlags(k, count));
         if (act == ACTION_RECENTRE)
@@ -291,8 +338,9 @@ VF_KERNEL void collapseDecide(__global const float4 *motion, __global const floa
         if (act != ACTION_KEEP)
             contourChanged[c] = 1;
         action[i] = act;
+        kept[lane] = act != ACTION_DELETE;
     }
-    scanTile(scratch, act != ACTION_DELETE && i < n ? 1u : 0u, tileOffset, tileTotals, tiles);
+    scanTiles(scratch, itemBefore, kept, active, n, tileOffset, tileTotals, tiles);
     if (get_local_id(0) == 0 && groupFlags)
         atomic_or(&status[STATUS_PASS], groupFlags);
 }
