@@ -238,32 +238,47 @@ VF_KERNEL void strain(FLOW_ARGS, float stepLength, __global const float4 *motion
 {
     __local float2 firstLane[VF_LOCAL];
     __local float scratch[VF_SCAN_SCRATCH];
-    const uint g = get_global_id(0), lid = get_local_id(0);
-    const bool active = VF_LANES * g < n;
-    float u[2][VF_LANES];
+    const uint g = get_global_id(0), lid = get_local_id(0), first = VF_LANES * g;
+    const bool active = first < n;
+    floatv ux = (floatv)(0.0f), uy = (floatv)(0.0f);
     if (active) {
-        floatv x, y, ux, uy;
+        floatv x, y;
         lanesOf((__global const float *)motion, 4, g, n, &x, &y);
         flowVelocityLanes(FLOW_PASS, x, y, 1.0f, &ux, &uy);
-        VF_VSTORE(ux, 0, u[0]);
-        VF_VSTORE(uy, 0, u[1]);
     }
-    firstLane[lid] = active ? (float2)(u[0][0], u[1][0]) : (float2)(0.0f);
+    firstLane[lid] = (float2)(ux.s0, uy.s0);
     barrier(CLK_LOCAL_MEM_FENCE);
     float s = 0.0f;
-    for (int k = 0; active && k < VF_LANES && VF_LANES * g + k < n; ++k) {
-        const uint i = VF_LANES * g + k, c = contourOf[i];
-        const uint j = nextIn(i, contourOffset[c], contourCount[c]);
-        const float2 ui = (float2)(u[0][k], u[1][k]);
-        velocityAt[i] = ui;
-        float2 uj;
-        if (j == i + 1 && k + 1 < VF_LANES)
-            uj = (float2)(u[0][k + 1], u[1][k + 1]);
-        else if (j == i + 1 && lid + 1 < VF_LOCAL)
-            uj = firstLane[lid + 1];
-        else
-            uj = flowVelocity(FLOW_PASS, motion[j].xy, 1.0f);
-        s = fmax(s, distance(ui, uj) * stepLength / (0.5f * (spacing[i] + spacing[j])));
+    if (first + VF_LANES < n && contourOf[first] == contourOf[first + VF_LANES]) {
+        // All lanes on one contour that goes on past them: each edge's far end is the next lane.
+        const float2 after = lid + 1 < VF_LOCAL ? firstLane[lid + 1]
+                                                : flowVelocity(FLOW_PASS, motion[first + VF_LANES].xy, 1.0f);
+        const floatv dx = (floatv)(ux.s1234, ux.s567, after.x) - ux, dy = (floatv)(uy.s1234, uy.s567, after.y) - uy;
+        const floatv edgeSpacing = 0.5f * (VF_VLOAD(0, spacing + first) + VF_VLOAD(0, spacing + first + 1));
+        const floatv strains = sqrt(dx * dx + dy * dy) * stepLength / edgeSpacing;
+        const float4 halves = fmax(strains.lo, strains.hi);
+        s = fmax(fmax(halves.x, halves.y), fmax(halves.z, halves.w));
+        vstore16((float16)(ux.s0, uy.s0, ux.s1, uy.s1, ux.s2, uy.s2, ux.s3, uy.s3, ux.s4, uy.s4, ux.s5, uy.s5, ux.s6,
+                           uy.s6, ux.s7, uy.s7),
+                 0, (__global float *)(velocityAt + first));
+    } else if (active) {
+        float u[2][VF_LANES];
+        VF_VSTORE(ux, 0, u[0]);
+        VF_VSTORE(uy, 0, u[1]);
+        for (int k = 0; k < VF_LANES && first + k < n; ++k) {
+            const uint i = first + k, c = contourOf[i];
+            const uint j = nextIn(i, contourOffset[c], contourCount[c]);
+            const float2 ui = (float2)(u[0][k], u[1][k]);
+            velocityAt[i] = ui;
+            float2 uj;
+            if (j == i + 1 && k + 1 < VF_LANES)
+                uj = (float2)(u[0][k + 1], u[1][k + 1]);
+            else if (j == i + 1 && lid + 1 < VF_LOCAL)
+                uj = firstLane[lid + 1];
+            else
+                uj = flowVelocity(FLOW_PASS, motion[j].xy, 1.0f);
+            s = fmax(s, distance(ui, uj) * stepLength / (0.5f * (spacing[i] + spacing[j])));
+        }
     }
     const float worst = VF_LOCAL_REDUCE(maxFloat)(scratch, s);
     if (lid == 0)
