@@ -8,6 +8,9 @@ namespace vf::sim::opencl {
 namespace {
 constexpr std::size_t itemsPerWorkItem = 8;  // VF_SCAN_ITEMS in scan.cl
 constexpr std::size_t blockSize = localSize * itemsPerWorkItem;
+// Arrays up to this long are scanned by one work-group in one launch (scanOneGroup); a work-item's
+// run is then at most one block.
+constexpr std::size_t oneGroupLimit = localSize * blockSize;
 } // namespace
 
 Scan::Scan(Device& device, const std::string& type, std::size_t elementSize, const std::string& options)
@@ -18,11 +21,15 @@ Scan::Scan(Device& device, const std::string& type, std::size_t elementSize, con
                                              options + " -DVF_SCAN_T=" + type);
     m_scanBlocks = cl::Kernel(program, "scanBlocks");
     m_addBlockBase = cl::Kernel(program, "addBlockBase");
+    m_scanOneGroup = cl::Kernel(program, "scanOneGroup");
 }
 
 void Scan::exclusive(const cl::Buffer& data, std::size_t count)
 {
-    exclusive(data, count, 0);
+    if (count <= oneGroupLimit)
+        launch(m_device.queue(), m_scanOneGroup, localSize, data, cl_uint(count));
+    else
+        exclusive(data, count, 0);
 }
 
 void Scan::exclusive(cl::Buffer data, std::size_t count, std::size_t level)

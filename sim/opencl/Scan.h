@@ -1,7 +1,8 @@
 #pragma once
 // In-place exclusive prefix sums on the device (scan.cl), for uint or the accumulation type.
 // Work-efficient and deterministic: blocks of 512 entries are scanned by one work-group each, the
-// block totals are scanned recursively the same way and added back. The contour kernels fuse the
+// block totals are scanned recursively the same way and added back; arrays of up to 32768 entries
+// are scanned by one work-group in one launch. The contour kernels fuse the
 // first level into their own work (one tile total per work-group) and use this for the rest.
 #include "sim/opencl/Device.h"
 
@@ -26,7 +27,7 @@ private:
 
     Device& m_device;
     std::size_t m_elementSize;
-    cl::Kernel m_scanBlocks, m_addBlockBase;
+    cl::Kernel m_scanBlocks, m_addBlockBase, m_scanOneGroup;
     std::vector<cl::Buffer> m_levels;  // block totals, one buffer per recursion level
     std::vector<std::size_t> m_levelSizes;
 };

@@ -38,3 +38,23 @@ VF_KERNEL void addBlockBase(__global VF_SCAN_T *data, uint n, __global const VF_
     if (i < n)
         data[i] += blockBase[i / VF_SCAN_BLOCK];
 }
+
+// The whole scan of a short array (up to VF_LOCAL·VF_SCAN_BLOCK entries) in one work-group and one
+// launch: each work-item sums a contiguous run, the runs' totals are scanned locally, and each
+// work-item writes its run's prefixes. For the counting kernels' tile totals, where the launches
+// of the levels cost more than the work.
+VF_KERNEL void scanOneGroup(__global VF_SCAN_T *data, uint n)
+{
+    __local VF_SCAN_T scratch[VF_SCAN_SCRATCH];
+    const uint run = (n + VF_LOCAL - 1) / VF_LOCAL, first = get_local_id(0) * run, end = min(first + run, n);
+    VF_SCAN_T sum = 0;
+    for (uint i = first; i < end; ++i)
+        sum += data[i];
+    VF_SCAN_T total;
+    VF_SCAN_T running = VF_LOCAL_SCAN(VF_SCAN_T)(scratch, sum, &total);
+    for (uint i = first; i < end; ++i) {
+        const VF_SCAN_T value = data[i];
+        data[i] = running;
+        running += value;
+    }
+}
