@@ -85,8 +85,17 @@ VF_KERNEL void arcTilesAndCount(__global const float4 *motion, CONTOUR_ARGS, uin
         VF_VSTORE(sqrt(dx * dx + dy * dy), 0, lengths);
         int bucket[VF_LANES];
         bucketLanes(GRID_PASS, x, y, bucket);
-        for (int k = 0; k < VF_LANES && first + k < n; ++k)
-            rank[first + k] = atomic_inc(&bucketCounts[bucket[k]]);
+        // One atomic per run of lanes in one bucket (neighbours along a contour mostly share a cell).
+        const int lanes = (int)min((uint)VF_LANES, n - first);
+        for (int k = 0; k < lanes;) {
+            int end = k + 1;
+            while (end < lanes && bucket[end] == bucket[k])
+                ++end;
+            const uint base = atomic_add(&bucketCounts[bucket[k]], (uint)(end - k));
+            for (int m = k; m < end; ++m)
+                rank[first + m] = base + (uint)(m - k);
+            k = end;
+        }
         for (int k = 0; k < VF_LANES; ++k)
             lengths[k] = first + k < n ? lengths[k] : 0.0f;
     }
