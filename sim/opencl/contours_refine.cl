@@ -191,11 +191,23 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
     if (get_local_id(0) == 0)
         groupFlags = 0;
     barrier(CLK_LOCAL_MEM_FENCE);
+    // A group of lanes on one contour, not at its end, whose edges are all well inside (d/2, d) is
+    // settled: every vertex stays one to one, with no flag. The margin keeps the vector lengths
+    // from deciding anything the one-vertex test below (distance()) could decide otherwise.
+    bool settled = false;
+    if (active && first + VF_LANES < n && inContour[first] == inContour[first + VF_LANES]) {
+        floatv x, y, nextX, nextY;
+        consecutiveLanes((__global const float *)inMotion, 4, first, &x, &y);
+        consecutiveLanes((__global const float *)inMotion, 4, first + 1, &nextX, &nextY);
+        const floatv dx = nextX - x, dy = nextY - y, length = sqrt(dx * dx + dy * dy);
+        const floatv spacing = 0.5f * (VF_VLOAD(0, inSpacing + first) + VF_VLOAD(0, inSpacing + first + 1));
+        settled = all((length < 0.99999f * spacing) & (length > 0.50001f * spacing));
+    }
     uint produced[VF_LANES];
     for (int k = 0; k < VF_LANES; ++k) {
         const uint i = first + k;
-        produced[k] = 0;
-        if (!active || i >= n)
+        produced[k] = settled ? 1 : 0;
+        if (settled || !active || i >= n)
             continue;
         const uint c = inContour[i], count = contourCount[c];
         const uint j = nextIn(i, contourOffset[c], count);
