@@ -262,20 +262,34 @@ VF_KERNEL void rawSpacing(FLOW_ARGS, __global const float4 *motion, CONTOUR_ARGS
     if (VF_LANES * g >= n)
         return;
     const float radius2 = searchRadius * searchRadius;
-    float before[2][VF_LANES], after[2][VF_LANES], distance2[VF_LANES];
-    for (int k = 0; k < VF_LANES; ++k) {
-        const uint i = laneVertex(g, k, n), c = contourOf[i], first = contourOffset[c], count = contourCount[c];
-        const float4 b = motion[previousIn(i, first, count)], a = motion[nextIn(i, first, count)];
-        before[0][k] = b.x;
-        before[1][k] = b.y;
-        after[0][k] = a.x;
-        after[1][k] = a.y;
-        distance2[k] = proximity ? as_float(gap2[slot[i]]) : radius2;
+    __global const float *positions = (__global const float *)motion;
+    const uint first = VF_LANES * g;
+    float distance2[VF_LANES];
+    for (int k = 0; k < VF_LANES; ++k)
+        distance2[k] = proximity ? as_float(gap2[slot[laneVertex(g, k, n)]]) : radius2;
+    floatv x, y, beforeX, beforeY, afterX, afterY;
+    lanesOf(positions, 4, g, n, &x, &y);
+    if (first > 0 && first + VF_LANES < n && contourOf[first - 1] == contourOf[first + VF_LANES]) {
+        // The lanes and a vertex either side of them on one contour: the neighbours are the lanes
+        // one over, two more wide loads.
+        consecutiveLanes(positions, 4, first - 1, &beforeX, &beforeY);
+        consecutiveLanes(positions, 4, first + 1, &afterX, &afterY);
+    } else {
+        float before[2][VF_LANES], after[2][VF_LANES];
+        for (int k = 0; k < VF_LANES; ++k) {
+            const uint i = laneVertex(g, k, n), c = contourOf[i], from = contourOffset[c], count = contourCount[c];
+            const float4 b = motion[previousIn(i, from, count)], a = motion[nextIn(i, from, count)];
+            before[0][k] = b.x;
+            before[1][k] = b.y;
+            after[0][k] = a.x;
+            after[1][k] = a.y;
+        }
+        beforeX = VF_VLOAD(0, before[0]);
+        beforeY = VF_VLOAD(0, before[1]);
+        afterX = VF_VLOAD(0, after[0]);
+        afterY = VF_VLOAD(0, after[1]);
     }
-    floatv x, y;
-    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
-    const floatv kappa = mengerCurvature(VF_VLOAD(0, before[0]), VF_VLOAD(0, before[1]), x, y, VF_VLOAD(0, after[0]),
-                                         VF_VLOAD(0, after[1]));
+    const floatv kappa = mengerCurvature(beforeX, beforeY, x, y, afterX, afterY);
     // exp(−a)·exp(−b) of eqs. 4 and 5 as one exponential.
     floatv factor = exp(-kappa * curvatureLength - fabs(flowVorticityLanes(FLOW_PASS, x, y, 1.0f)) / vorticityScale);
     const floatv gap = VF_VLOAD(0, distance2);
