@@ -351,8 +351,8 @@ bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, b
     if (vertices == 0)
         return true;
     queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
-    launch(queue, advect, laneGroups(vertices), flow, motion, front.motion, cl_uint(vertices), back.motion, cl_int(startKnown),
-           status);
+    launch(queue, advect, laneGroups(vertices), flow, motion, front.motion, cl_uint(vertices), back.motion,
+           cl_int(startKnown), status);
     computeSpacing(flow);
     const bool withinBudget = refine(flow, motion);
     if (settings.areaCorrection)
@@ -380,8 +380,9 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
            cl_float(settings.proximityLength()), g.cellSize, cl_int(settings.proximity), tileOffset, back.contour,
            back.spacing);
-    launch(queue, smoothSpacing, laneGroups(vertices), back.spacing, front.contour, contourOffset, contourCount, n, weights,
-           cl_int(smoothingRadius), cl_float(settings.minSpacing()), cl_float(settings.maxSpacing), front.spacing);
+    launch(queue, smoothSpacing, laneGroups(vertices), back.spacing, front.contour, contourOffset, contourCount, n,
+           weights, cl_int(smoothingRadius), cl_float(settings.minSpacing()), cl_float(settings.maxSpacing),
+           front.spacing);
 }
 
 void DeviceContours::Impl::buildGrid(const Grid& g)
@@ -393,8 +394,8 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
            back.spacing, tileTotals, cl_uint(arcTiles), work, tileOffset);
     sumScan.exclusive(tileTotals, arcTiles + 1);
     countScan.exclusive(work, g.buckets() + 1);
-    launch(queue, gridScatter, laneGroups(vertices), front.motion, front.contour, contourOffset, contourCount, n, back.spacing,
-           tileTotals, g, work, tileOffset, back.motion, contourLength, back.contour);
+    launch(queue, gridScatter, laneGroups(vertices), front.motion, front.contour, contourOffset, contourCount, n,
+           back.spacing, tileTotals, g, work, tileOffset, back.motion, contourLength, back.contour);
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,
@@ -484,9 +485,9 @@ void DeviceContours::Impl::adopt(std::size_t total)
 DeviceContours::Impl::Pass DeviceContours::Impl::countSplits(const FlowBinding& flow, const Motion& motion)
 {
     clearPassFlags();
-    launch(queue, splitCount, laneGroups(vertices + 1), flow, motion, front.motion, front.spacing, front.contour, contourOffset,
-           contourCount, cl_uint(vertices), tileActive, contourChanged, contourCollapsing, tileOffset, tileTotals,
-           cl_uint(tiles()), status);
+    launch(queue, splitCount, laneGroups(vertices + 1), flow, motion, front.motion, front.spacing, front.contour,
+           contourOffset, contourCount, cl_uint(vertices), tileActive, contourChanged, contourCollapsing, tileOffset,
+           tileTotals, cl_uint(tiles()), status);
     countScan.exclusive(tileTotals, tiles() + 1);
     return readPass();
 }
@@ -504,9 +505,9 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
         markActiveTiles();
         pass = countSplits(flow, motion);  // the counts lived in the scratch that reserve() replaced
     }
-    launch(queue, splitScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour, contourOffset,
-           contourCount, cl_uint(vertices), tileActive, tileOffset, tileTotals, back.motion, back.spacing, back.contour,
-           status);
+    launch(queue, splitScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour,
+           contourOffset, contourCount, cl_uint(vertices), tileActive, tileOffset, tileTotals, back.motion,
+           back.spacing, back.contour, status);
     adopt(pass.total);
     return pass;
 }
@@ -521,19 +522,19 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
         if (!(colours & (1u << colour)))
             continue;
         clearPassFlags();
-        launch(queue, collapseDecide, laneGroups(vertices + 1), front.motion, front.spacing, front.contour, contourOffset,
-               contourCount, cl_uint(vertices), colour, tileActive, contourChanged, work, tileOffset, tileTotals,
-               cl_uint(tiles()), status);
+        launch(queue, collapseDecide, laneGroups(vertices + 1), front.motion, front.spacing, front.contour,
+               contourOffset, contourCount, cl_uint(vertices), colour, tileActive, contourChanged, work, tileOffset,
+               tileTotals, cl_uint(tiles()), status);
         countScan.exclusive(tileTotals, tiles() + 1);
         const Pass pass = readPass();
         if (pass.changed) {
-            launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour,
-                   contourOffset, contourCount, cl_uint(vertices), tileActive, work, tileOffset, tileTotals,
-                   back.motion, back.spacing, back.contour);
+            launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing,
+                   front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, work, tileOffset,
+                   tileTotals, back.motion, back.spacing, back.contour);
             adopt(pass.total);
         } else if (pass.flags & flagRecentred) {
-            launch(queue, recentreInPlace, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour,
-                   contourOffset, contourCount, cl_uint(vertices), tileActive, work);
+            launch(queue, recentreInPlace, laneGroups(vertices), flow, motion, front.motion, front.spacing,
+                   front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, work);
         }
         changed = changed || pass.changed || (pass.flags & flagRecentred);
         colours = pass.flags & flagsShortEdge;

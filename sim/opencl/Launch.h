@@ -11,8 +11,8 @@ namespace vf::sim::opencl {
 
 inline constexpr std::size_t localSize = 64;
 
-// The lane kernels (advect, strain, rawSpacing, smoothSpacing) take this many vertices per
-// work-item: VF_LANES of flow.h.cl.
+// The contour kernels other than the proximity search take this many vertices per work-item:
+// VF_LANES of flow.h.cl.
 inline constexpr std::size_t lanes = 8;
 
 inline std::size_t laneGroups(std::size_t vertices)

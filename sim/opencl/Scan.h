@@ -2,8 +2,8 @@
 // In-place exclusive prefix sums on the device (scan.cl), for uint or the accumulation type.
 // Work-efficient and deterministic: blocks of 512 entries are scanned by one work-group each, the
 // block totals are scanned recursively the same way and added back; arrays of up to 32768 entries
-// are scanned by one work-group in one launch. The contour kernels fuse the
-// first level into their own work (one tile total per work-group) and use this for the rest.
+// are scanned by one work-group in one launch. The contour kernels fuse the first level into their
+// own work (one total per tile of vertices) and use this for the rest.
 #include "sim/opencl/Device.h"
 
 #include <cstddef>

@@ -126,6 +126,14 @@ VF_INLINE bool wholeGroup(uint g, uint n)
     return VF_LANES * g + VF_LANES <= n;
 }
 
+// Whether the vertices from … to (to < n) all lie on one contour: contours are contiguous, so the
+// two ends tell. Then no vertex but `to` is its contour's last, and each one's next vertex is the
+// one after it in the store.
+VF_INLINE bool oneContour(__global const uint *contourOf, uint from, uint to, uint n)
+{
+    return to < n && contourOf[from] == contourOf[to];
+}
+
 // The first two floats of the VF_LANES (8) records from `first` on, in an array of 2 or 4 floats
 // per vertex: one or two wide loads.
 VF_INLINE void consecutiveLanes(__global const float *records, uint stride, uint first, floatv *x, floatv *y)
@@ -140,6 +148,17 @@ VF_INLINE void consecutiveLanes(__global const float *records, uint stride, uint
         *x = a.even;
         *y = a.odd;
     }
+}
+
+// The length of the edge from each of the VF_LANES vertices from `first` on to the vertex after it
+// in the store (all on one contour: see oneContour).
+VF_INLINE floatv edgesOnward(__global const float4 *motion, uint first)
+{
+    floatv x, y, nextX, nextY;
+    consecutiveLanes((__global const float *)motion, 4, first, &x, &y);
+    consecutiveLanes((__global const float *)motion, 4, first + 1, &nextX, &nextY);
+    const floatv dx = nextX - x, dy = nextY - y;
+    return sqrt(dx * dx + dy * dy);
 }
 
 // The first two floats of each lane's record in an array of 2 or 4 floats per vertex.
@@ -249,15 +268,15 @@ VF_KERNEL void strain(FLOW_ARGS, float stepLength, __global const float4 *motion
     firstLane[lid] = (float2)(ux.s0, uy.s0);
     barrier(CLK_LOCAL_MEM_FENCE);
     float s = 0.0f;
-    if (first + VF_LANES < n && contourOf[first] == contourOf[first + VF_LANES]) {
-        // All lanes on one contour that goes on past them: each edge's far end is the next lane.
+    if (oneContour(contourOf, first, first + VF_LANES, n)) {
+        // Each edge's far end is the next lane.
         const float2 after = lid + 1 < VF_LOCAL ? firstLane[lid + 1]
                                                 : flowVelocity(FLOW_PASS, motion[first + VF_LANES].xy, 1.0f);
         const floatv dx = (floatv)(ux.s1234, ux.s567, after.x) - ux, dy = (floatv)(uy.s1234, uy.s567, after.y) - uy;
         const floatv edgeSpacing = 0.5f * (VF_VLOAD(0, spacing + first) + VF_VLOAD(0, spacing + first + 1));
         const floatv strains = sqrt(dx * dx + dy * dy) * stepLength / edgeSpacing;
         const float4 halves = fmax(strains.lo, strains.hi);
-        s = fmax(fmax(halves.x, halves.y), fmax(halves.z, halves.w));
+        s = fmax(0.0f, fmax(fmax(halves.x, halves.y), fmax(halves.z, halves.w)));  // NaN lanes drop out
         vstore16((float16)(ux.s0, uy.s0, ux.s1, uy.s1, ux.s2, uy.s2, ux.s3, uy.s3, ux.s4, uy.s4, ux.s5, uy.s5, ux.s6,
                            uy.s6, ux.s7, uy.s7),
                  0, (__global float *)(velocityAt + first));

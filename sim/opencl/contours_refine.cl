@@ -11,9 +11,10 @@
 // repeat. A round's collapse passes only look at the contours that split in it or had a short edge
 // in its split count (contourCollapsing): the others have no edge for a collapse to act on. The
 // split count's short edges are those of collapseAction (length < (d_a + d_b)/4, more than 3
-// vertices). Counting kernels skip a tile with no vertex of an active contour (tileActive, uniform
-// across the work-group) and leave only its total: every vertex in it stays, one to one, so its
-// offsets are the vertices' places in the tile and are never written.
+// vertices). Counting kernels skip a tile with no vertex of an active contour (tileActive) and
+// leave only its total: every vertex in it stays, one to one, so its offsets are the vertices'
+// places in the tile and are never written. A work-group (eight tiles) none of whose tiles is
+// active returns before its barriers; the skipped tiles of other work-groups join the scan idle.
 #define TILE_ARGS __global const uint *tileActive
 
 // The store index vertex i moves to, or the new size of the store for i = n.
@@ -180,7 +181,8 @@ VF_INLINE void copyLanes(CONST_VERTEX_SET(in), uint first, VERTEX_SET(out), uint
 // split stopped by the depth cap.
 VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
                           __global const uint *contourCount, uint n, TILE_ARGS, __global uint *contourChanged,
-                          __global uint *contourCollapsing, __global uint *tileOffset, __global uint *tileTotals, uint tiles, __global uint *status)
+                          __global uint *contourCollapsing, __global uint *tileOffset, __global uint *tileTotals,
+                          uint tiles, __global uint *status)
 {
     __local uint scratch[VF_SCAN_SCRATCH], itemBefore[VF_LOCAL];
     __local uint groupFlags;
@@ -195,11 +197,8 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
     // settled: every vertex stays one to one, with no flag. The margin keeps the vector lengths
     // from deciding anything the one-vertex test below (distance()) could decide otherwise.
     bool settled = false;
-    if (active && first + VF_LANES < n && inContour[first] == inContour[first + VF_LANES]) {
-        floatv x, y, nextX, nextY;
-        consecutiveLanes((__global const float *)inMotion, 4, first, &x, &y);
-        consecutiveLanes((__global const float *)inMotion, 4, first + 1, &nextX, &nextY);
-        const floatv dx = nextX - x, dy = nextY - y, length = sqrt(dx * dx + dy * dy);
+    if (active && oneContour(inContour, first, first + VF_LANES, n)) {
+        const floatv length = edgesOnward(inMotion, first);
         const floatv spacing = 0.5f * (VF_VLOAD(0, inSpacing + first) + VF_VLOAD(0, inSpacing + first + 1));
         settled = all((length < 0.99999f * spacing) & (length > 0.50001f * spacing));
     }

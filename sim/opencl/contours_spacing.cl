@@ -39,7 +39,8 @@ VF_INLINE uint bucketOf(GRID_ARGS, int2 cell)
     return rowStart(GRID_PASS, cell.y) + columnOf(GRID_PASS, cell.x);
 }
 
-// bucketOf(cellOf(p)) for each lane's p = (x, y), into `buckets`.
+// bucketOf(cellOf(p)) for each lane's p = (x, y), into `buckets`: the grid files entries with this
+// and the search finds them with bucketOf(cellOf(p)), so the two must stay the same arithmetic.
 VF_INLINE void bucketLanes(GRID_ARGS, floatv x, floatv y, int *buckets)
 {
     const intv cellX = VF_CONVERT_INTV(clamp(floor(x / cellSize), -1e9f, 1e9f));
@@ -64,25 +65,16 @@ VF_KERNEL void arcTilesAndCount(__global const float4 *motion, CONTOUR_ARGS, uin
     const uint g = get_global_id(0), first = VF_LANES * g;
     float lengths[VF_LANES] = {0.0f};
     if (first < n) {
-        __global const float *positions = (__global const float *)motion;
-        floatv x, y, nextX, nextY;
-        lanesOf(positions, 4, g, n, &x, &y);
-        if (first + VF_LANES < n && contourOf[first] == contourOf[first + VF_LANES]) {
-            // All lanes on one contour that goes on past them: each next vertex is the next lane.
-            consecutiveLanes(positions, 4, first + 1, &nextX, &nextY);
+        if (oneContour(contourOf, first, first + VF_LANES, n)) {
+            VF_VSTORE(edgesOnward(motion, first), 0, lengths);
         } else {
-            float nexts[2][VF_LANES];
             for (int k = 0; k < VF_LANES; ++k) {
                 const uint i = laneVertex(g, k, n), c = contourOf[i];
-                const float4 m = motion[nextIn(i, contourOffset[c], contourCount[c])];
-                nexts[0][k] = m.x;
-                nexts[1][k] = m.y;
+                lengths[k] = distance(motion[i].xy, motion[nextIn(i, contourOffset[c], contourCount[c])].xy);
             }
-            nextX = VF_VLOAD(0, nexts[0]);
-            nextY = VF_VLOAD(0, nexts[1]);
         }
-        const floatv dx = nextX - x, dy = nextY - y;
-        VF_VSTORE(sqrt(dx * dx + dy * dy), 0, lengths);
+        floatv x, y;
+        lanesOf((__global const float *)motion, 4, g, n, &x, &y);
         int bucket[VF_LANES];
         bucketLanes(GRID_PASS, x, y, bucket);
         // One atomic per run of lanes in one bucket (neighbours along a contour mostly share a cell).
@@ -269,7 +261,7 @@ VF_KERNEL void rawSpacing(FLOW_ARGS, __global const float4 *motion, CONTOUR_ARGS
         distance2[k] = proximity ? as_float(gap2[slot[laneVertex(g, k, n)]]) : radius2;
     floatv x, y, beforeX, beforeY, afterX, afterY;
     lanesOf(positions, 4, g, n, &x, &y);
-    if (first > 0 && first + VF_LANES < n && contourOf[first - 1] == contourOf[first + VF_LANES]) {
+    if (first > 0 && oneContour(contourOf, first - 1, first + VF_LANES, n)) {
         // The lanes and a vertex either side of them on one contour: the neighbours are the lanes
         // one over, two more wide loads.
         consecutiveLanes(positions, 4, first - 1, &beforeX, &beforeY);

@@ -11,9 +11,9 @@
 #define VF_INLINE inline __attribute__((always_inline))
 #endif
 
-// Lanes: a kernel that treats many vertices alike (advect, strain, rawSpacing, smoothSpacing)
-// gives each work-item VF_LANES consecutive vertices as vectors, x and y apart. PoCL vectorises no
-// work-item loop of those kernels (LLVM's SLP pass turns neighbouring loads into float2 before
+// Lanes: the contour kernels (all but the proximity search) give each work-item VF_LANES
+// consecutive vertices, as vectors x and y apart where they do the same to each. PoCL vectorises
+// no work-item loop of those kernels (LLVM's SLP pass turns neighbouring loads into float2 before
 // PoCL's loop vectoriser sees them, and that vectoriser refuses vector values), and RK4's four
 // dependent samples leave a CPU core waiting on latency. As eight lanes the same arithmetic runs
 // about 2.7 times faster on PoCL. The lane code is written for eight (float8, and float16 loads of
