@@ -374,7 +374,7 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
     const Grid g = grid();
     if (settings.proximity) {
         buildGrid(g);
-        launch(queue, nearestOtherPart, vertices, g, n, work, back.motion, contourLength, back.contour);
+        launch(queue, nearestOtherPart, laneGroups(g.buckets()), g, work, back.motion, contourLength, back.contour);
     }
     launch(queue, rawSpacing, laneGroups(vertices), flow, front.motion, front.contour, contourOffset, contourCount, n,
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
@@ -395,7 +395,11 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
     sumScan.exclusive(tileTotals, arcTiles + 1);
     countScan.exclusive(work, g.buckets() + 1);
     launch(queue, gridScatter, laneGroups(vertices), front.motion, front.contour, contourOffset, contourCount, n,
-           back.spacing, tileTotals, g, work, tileOffset, back.motion, contourLength, back.contour);
+           back.spacing, tileTotals, g, work, tileOffset, back.motion, contourLength);
+    // Each entry's squared distance to another part starts at the search radius squared (nothing
+    // found) for nearestOtherPart's atomic_min: one fill, where gridScatter would write it to
+    // scattered slots.
+    queue.enqueueFillBuffer(back.contour, cl_float(g.cellSize * g.cellSize), 0, vertices * sizeof(cl_float));
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,

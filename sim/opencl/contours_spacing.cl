@@ -18,29 +18,8 @@
 #define GRID_ARGS float cellSize, uint columnBits, uint rowBits
 #define GRID_PASS cellSize, columnBits, rowBits
 
-VF_INLINE int2 cellOf(float cellSize, float2 p)
-{
-    // floor, clamped into int's range (convert_int2_sat_rtn does the same, several times slower).
-    return convert_int2(clamp(floor(p / cellSize), -1e9f, 1e9f));
-}
-
-VF_INLINE uint columnOf(GRID_ARGS, int x)
-{
-    return (uint)x & ((1u << columnBits) - 1u);
-}
-
-VF_INLINE uint rowStart(GRID_ARGS, int y)
-{
-    return ((uint)y & ((1u << rowBits) - 1u)) << columnBits;
-}
-
-VF_INLINE uint bucketOf(GRID_ARGS, int2 cell)
-{
-    return rowStart(GRID_PASS, cell.y) + columnOf(GRID_PASS, cell.x);
-}
-
-// bucketOf(cellOf(p)) for each lane's p = (x, y), into `buckets`: the grid files entries with this
-// and the search finds them with bucketOf(cellOf(p)), so the two must stay the same arithmetic.
+// The bucket of each lane's p = (x, y), into `buckets`: the cell floor(p / cellSize), clamped into
+// int's range (convert_int_sat_rtn does the same, several times slower), wrapped onto the torus.
 VF_INLINE void bucketLanes(GRID_ARGS, floatv x, floatv y, int *buckets)
 {
     const intv cellX = VF_CONVERT_INTV(clamp(floor(x / cellSize), -1e9f, 1e9f));
@@ -117,12 +96,10 @@ VF_INLINE acc_t arcBefore(__global const float *tileArc, __global const acc_t *t
 // bucket follows the atomics and may differ from run to run, but nearestOtherPart is a minimum
 // over the bucket's entries, which no order changes, so no result depends on it. An entry is
 // (x, y, arc, contour) as bits, the arc counted from the contour's first vertex; the first vertex
-// also leaves its contour's length. The entry's squared distance to another part starts at the
-// search radius squared (nothing found), as bits for nearestOtherPart's atomic_min.
+// also leaves its contour's length.
 VF_KERNEL void gridScatter(__global const float4 *motion, CONTOUR_ARGS, uint n, __global const float *tileArc,
                            __global const acc_t *tilePrefix, GRID_ARGS, __global const uint *bucketStart,
-                           __global uint *rankThenSlot, __global uint4 *entries, __global float *contourLength,
-                           __global uint *gap2)
+                           __global uint *rankThenSlot, __global uint4 *entries, __global float *contourLength)
 {
     const uint g = get_global_id(0);
     if (VF_LANES * g >= n)
@@ -142,7 +119,6 @@ VF_KERNEL void gridScatter(__global const float4 *motion, CONTOUR_ARGS, uint n, 
             contourLength[c] = (float)(arcBefore(tileArc, tilePrefix, first + contourCount[c]) - start);
         const uint slot = bucketStart[bucket[k]] + rankThenSlot[i];
         entries[slot] = (uint4)(as_uint(xs[k]), as_uint(ys[k]), as_uint(arc), c);
-        gap2[slot] = as_uint(cellSize * cellSize);
         rankThenSlot[i] = slot;
     }
 }
@@ -181,53 +157,64 @@ VF_INLINE float4 nearestInRun(__global const uint4 *entries, uint from, uint end
     return best2;
 }
 
+// The search of the entry at `self`: the rest of its bucket row up to rowEnd, then the runs
+// [x, y) of `runs` (an empty run is (0, 0)). Its own minimum goes to gap2 once, at the end.
+VF_INLINE void nearestOfEntry(__global const uint4 *entries, uint self, uint rowEnd, uint2 runs[3],
+                              __global const float *contourLength, float radius2, __global uint *gap2)
+{
+    const uint4 entry = entries[self];
+    const float2 p = (float2)(as_float(entry.x), as_float(entry.y));
+    const float arc = as_float(entry.z), length = contourLength[entry.w];
+    float4 best2 = (float4)(radius2);
+    best2 = nearestInRun(entries, self + 1, rowEnd, p, arc, entry.w, length, radius2, best2, gap2);
+    for (int r = 0; r < 3; ++r)
+        best2 = nearestInRun(entries, runs[r].x, runs[r].y, p, arc, entry.w, length, radius2, best2, gap2);
+    const float2 pairs = select(best2.xy, best2.zw, best2.zw < best2.xy);
+    const float nearest = pairs.y < pairs.x ? pairs.y : pairs.x;
+    if (nearest < radius2)
+        atomic_min(&gap2[self], as_uint(nearest));
+}
+
 // ProximityGrid::nearestOtherPart for every grid entry: the squared distance to the nearest vertex
 // of another part within the search radius (the cell size), or the radius squared when there is
 // none, as float bits in gap2 (from gridScatter). Distance is symmetric and so is "another part"
 // (same contour, same arcs, same length), so every pair of entries is compared once, by the one
 // that comes first: the entry takes the rest of its own bucket and the next bucket of its row,
 // then the three buckets of the next row (the forward half of the 3×3 cells), and both ends of a
-// pair keep the minimum. Work-items run in bucket order, so neighbouring ones search the same
-// cells, which a CPU device then finds in its caches.
-VF_KERNEL void nearestOtherPart(GRID_ARGS, uint n, __global const uint *bucketStart, __global const uint4 *entries,
+// pair keep the minimum. A work-item takes VF_LANES buckets in turn: the runs to search are the
+// same for every entry of a bucket and come from the bucket's place on the torus, so an entry
+// needs no cell arithmetic, and most buckets are empty. Work-items run in bucket order, so
+// neighbouring ones search the same cells, which a CPU device then finds in its caches.
+VF_KERNEL void nearestOtherPart(GRID_ARGS, __global const uint *bucketStart, __global const uint4 *entries,
                                 __global const float *contourLength, __global uint *gap2)
 {
-    const uint self = get_global_id(0);
-    if (self >= n)
+    // The bucket count, a power of two of at least 2^14, is a multiple of VF_LANES.
+    const uint first = VF_LANES * get_global_id(0);
+    if (first >= (1u << (columnBits + rowBits)))
         return;
-    const uint4 entry = entries[self];
-    const float2 p = (float2)(as_float(entry.x), as_float(entry.y));
-    const float arc = as_float(entry.z), length = contourLength[entry.w];
+    const uint lastColumn = (1u << columnBits) - 1u, lastRow = (1u << rowBits) - 1u;
     const float radius2 = cellSize * cellSize;
-    const int2 cell = cellOf(cellSize, p);
-    const uint lastColumn = (1u << columnBits) - 1u;
-    const uint column = columnOf(GRID_PASS, cell.x);
-    const uint left = columnOf(GRID_PASS, cell.x - 1), right = columnOf(GRID_PASS, cell.x + 1);
-    // This row: the rest of the entry's bucket and the next one, one run unless the row wraps.
-    const uint row = rowStart(GRID_PASS, cell.y);
-    float4 best2 = (float4)(radius2);
-    if (column < lastColumn) {
-        best2 = nearestInRun(entries, self + 1, bucketStart[row + column + 2], p, arc, entry.w, length, radius2, best2,
-                             gap2);
-    } else {
-        best2 = nearestInRun(entries, self + 1, bucketStart[row + column + 1], p, arc, entry.w, length, radius2, best2,
-                             gap2);
-        best2 = nearestInRun(entries, bucketStart[row], bucketStart[row + 1], p, arc, entry.w, length, radius2, best2,
-                             gap2);
+    for (uint bucket = first; bucket < first + VF_LANES; ++bucket) {
+        const uint from = bucketStart[bucket], to = bucketStart[bucket + 1];
+        if (from == to)
+            continue;
+        const uint column = bucket & lastColumn, row = bucket - column;
+        // This row: the rest of the bucket and the next one, one run unless the row wraps.
+        const bool lastInRow = column == lastColumn;
+        const uint rowEnd = lastInRow ? to : bucketStart[bucket + 2];
+        uint2 runs[3] = {(uint2)(0), (uint2)(0), (uint2)(0)};
+        if (lastInRow)
+            runs[0] = (uint2)(bucketStart[row], bucketStart[row + 1]);
+        // The next row: three adjacent buckets, one run unless the row wraps between them.
+        const uint below = (((row >> columnBits) + 1u) & lastRow) << columnBits;
+        const uint left = (column - 1u) & lastColumn, right = (column + 1u) & lastColumn;
+        const bool wraps = left > right;
+        runs[1] = (uint2)(bucketStart[below + left], bucketStart[below + (wraps ? lastColumn : right) + 1]);
+        if (wraps)
+            runs[2] = (uint2)(bucketStart[below], bucketStart[below + right + 1]);
+        for (uint self = from; self < to; ++self)
+            nearestOfEntry(entries, self, rowEnd, runs, contourLength, radius2, gap2);
     }
-    // The next row: three adjacent buckets, one run unless the row wraps between them.
-    const uint below = rowStart(GRID_PASS, cell.y + 1);
-    const bool wraps = left > right;
-    for (int run = 0; run <= (int)wraps; ++run) {
-        const uint from = below + (run == 0 ? left : 0);
-        const uint to = below + (wraps && run == 0 ? lastColumn : right);
-        best2 = nearestInRun(entries, bucketStart[from], bucketStart[to + 1], p, arc, entry.w, length, radius2, best2,
-                             gap2);
-    }
-    const float2 pairs = select(best2.xy, best2.zw, best2.zw < best2.xy);
-    const float nearest = pairs.y < pairs.x ? pairs.y : pairs.x;
-    if (nearest < radius2)
-        atomic_min(&gap2[self], as_uint(nearest));
 }
 
 // Menger curvature: 1 / radius of the circle through the three points (SpacingField), in lanes.

@@ -314,6 +314,7 @@ private slots:
     void strainMatchesReference_data();
     void strainMatchesReference();
     void smallContourMatchesReference();
+    void proximityAcrossGridSeamsMatchesReference();
     void runsAreBitIdentical();
     void strainSamplesAreTheFirstStage();
     void maxVerticesStopsCleanly();
@@ -526,6 +527,37 @@ void TestDeviceContours::smallContourMatchesReference()
     QCOMPARE(pair.device().vertexCount(), std::size_t(5));
     const Agreement a = compare(pair);
     QVERIFY2(a.hausdorff <= 1e-5 && a.countDifference == 0.0, qPrintable(describe(a, pair)));
+}
+
+// The proximity term where the neighbour search wraps: the grid's torus joins its last column to
+// its first at x = 0 and its last row to its first at y = 0. Pairs of rings 0.005 apart (a third
+// of the search radius) come closest across those seams: side by side across x = 0, one above the
+// other across y = 0, and one above the other at the origin, across both. After one short step
+// each vertex's spacing agrees with the reference's, and the term is active: where the rings come
+// closest their spacing falls below 0.6 d_max, where curvature alone would keep 0.85 d_max.
+void TestDeviceContours::proximityAcrossGridSeamsMatchesReference()
+{
+    const double maxSpacing = 1.0 / 128, radius = 0.0975;
+    Pair pair(*m_device, FlowId::Contraction, tracking(maxSpacing, true));
+    const Vec2 centres[] = {{-0.1, 0.3}, {0.1, 0.3}, {0.3, -0.1}, {0.3, 0.1}, {0.0, -0.1}, {0.0, 0.1}};
+    for (int k = 0; k < 6; ++k)
+        pair.add(k, sim::circle(centres[k], radius, maxSpacing));
+    pair.step(1e-6);
+    const std::vector<sim::Contour> device = pair.device().read();
+    const std::vector<sim::Contour>& reference = pair.reference().contours();
+    QCOMPARE(device.size(), reference.size());
+    double smallest = maxSpacing, worst = 0.0;
+    for (std::size_t c = 0; c < device.size(); ++c) {
+        QCOMPARE(device[c].spacing.size(), reference[c].spacing.size());
+        for (std::size_t i = 0; i < device[c].spacing.size(); ++i) {
+            smallest = std::min(smallest, reference[c].spacing[i]);
+            worst = std::max(worst, std::abs(device[c].spacing[i] - reference[c].spacing[i]) / reference[c].spacing[i]);
+        }
+    }
+    qInfo() << "vertices" << pair.device().vertexCount() << "smallest spacing / d_max" << smallest / maxSpacing
+            << "worst relative spacing difference" << worst;
+    QVERIFY2(smallest < 0.6 * maxSpacing, qPrintable(QString::number(smallest / maxSpacing)));
+    QVERIFY2(worst < 1e-4, qPrintable(QString::number(worst)));
 }
 
 void TestDeviceContours::runsAreBitIdentical()
