@@ -123,56 +123,83 @@ VF_KERNEL void gridScatter(__global const float4 *motion, CONTOUR_ARGS, uint n, 
     }
 }
 
-// The candidates of one run of entries [from, end) for the entry (p, arc, contour) of a contour of
-// `length`: the smallest squared distance among those of another part, and each of them gets
-// this distance as a candidate for its own minimum (atomic_min on the bits of a non-negative
-// float orders as the floats do, and gives the same result in any order). Four entries at a
-// time, branch-free: most candidates are the vertex's own neighbours along its contour, and a
-// branch per candidate would mispredict. Lanes past the run read the next entries (the array has
-// slack at the end) and are masked out. best2 keeps a minimum per lane, which the caller reduces
-// once. Minima are plain comparisons: a NaN distance fails `<` and leaves the minimum as it was,
-// as fmin would (a step that moved a vertex to a non-finite position is thrown away when its next
-// refinement pass reads the status).
-VF_INLINE float4 nearestInRun(__global const uint4 *entries, uint from, uint end, float2 p, float arc, uint contour,
-                              float length, float radius2, float4 best2, __global uint *gap2)
+// Two entries of one bucket, searched together: entry A in lanes 0–3, entry B in lanes 4–7, each
+// lane with its entry's position, arc, contour and contour length.
+typedef struct {
+    float8 x, y, arc, length;
+    uint8 contour;
+} EntryPair;
+
+// The candidates of one run of entries [from, end) for both entries of `pair`, each lane taking
+// those from index `low` on: for each entry, the smallest squared distance among those of another
+// part, and each of them gets this distance as a candidate for its own minimum (atomic_min on the
+// bits of a non-negative float orders as the floats do, and gives the same result in any order).
+// Four candidates at a time, compared with both entries in one 8-wide step (one load and shuffle
+// of the candidates serves two entries), branch-free: most candidates are the vertex's own
+// neighbours along its contour, and a branch per candidate would mispredict. Lanes past the run
+// read the next entries (the array has slack at the end) and are masked out. best2 keeps a
+// minimum per lane, which the caller reduces once. Minima are plain comparisons: a NaN distance
+// fails `<` and leaves the minimum as it was, as fmin would (a step that moved a vertex to a
+// non-finite position is thrown away when its next refinement pass reads the status).
+VF_INLINE float8 nearestInRun(__global const uint4 *entries, uint from, uint end, uint8 low, const EntryPair *pair,
+                              float radius2, float8 best2, __global uint *gap2)
 {
     for (uint e = from; e < end; e += 4) {
         const uint16 q = vload16(0, (__global const uint *)(entries + e));
-        const float4 dx = as_float4(q.s048c) - p.x, dy = as_float4(q.s159d) - p.y;
-        const float4 dist2 = dx * dx + dy * dy;
-        const float4 along = fabs(as_float4(q.s26ae) - arc);
-        const float4 way = select(along, length - along, length - along < along);
-        const int4 skip = ((q.s37bf == (uint4)(contour)) & (way * way <= 4.0f * dist2)) |
-                          ((uint4)(e) + (uint4)(0, 1, 2, 3) >= (uint4)(end));
-        const float4 nearest = select(dist2, (float4)(radius2), skip);
+        const uint8 index = (uint8)(e) + (uint8)(0, 1, 2, 3, 0, 1, 2, 3);
+        const float8 dx = as_float8(q.s048c048c) - pair->x, dy = as_float8(q.s159d159d) - pair->y;
+        const float8 dist2 = dx * dx + dy * dy;
+        const float8 along = fabs(as_float8(q.s26ae26ae) - pair->arc);
+        const float8 way = select(along, pair->length - along, pair->length - along < along);
+        const int8 skip = ((q.s37bf37bf == pair->contour) & (way * way <= 4.0f * dist2)) | (index >= (uint8)(end)) |
+                          (index < low);
+        const float8 nearest = select(dist2, (float8)(radius2), skip);
         best2 = select(best2, nearest, nearest < best2);
-        if (any(nearest < (float4)(radius2))) {
-            for (int k = 0; k < 4; ++k) {
-                const float d2 = k == 0 ? nearest.x : k == 1 ? nearest.y : k == 2 ? nearest.z : nearest.w;
-                if (d2 < radius2)
-                    atomic_min(&gap2[e + k], as_uint(d2));
-            }
+        if (any(nearest < (float8)(radius2))) {
+            float found[8];
+            vstore8(nearest, 0, found);
+            for (int k = 0; k < 8; ++k)
+                if (found[k] < radius2)
+                    atomic_min(&gap2[e + (k & 3)], as_uint(found[k]));
         }
     }
     return best2;
 }
 
-// The search of the entry at `self`: the rest of its bucket row up to rowEnd, then the runs
-// [x, y) of `runs` (an empty run is (0, 0)). Its own minimum goes to gap2 once, at the end.
-VF_INLINE void nearestOfEntry(__global const uint4 *entries, uint self, uint rowEnd, uint2 runs[3],
-                              __global const float *contourLength, float radius2, __global uint *gap2)
+// The smallest of a minimum per lane.
+VF_INLINE float smallestOf(float4 best2)
 {
-    const uint4 entry = entries[self];
-    const float2 p = (float2)(as_float(entry.x), as_float(entry.y));
-    const float arc = as_float(entry.z), length = contourLength[entry.w];
-    float4 best2 = (float4)(radius2);
-    best2 = nearestInRun(entries, self + 1, rowEnd, p, arc, entry.w, length, radius2, best2, gap2);
-    for (int r = 0; r < 3; ++r)
-        best2 = nearestInRun(entries, runs[r].x, runs[r].y, p, arc, entry.w, length, radius2, best2, gap2);
     const float2 pairs = select(best2.xy, best2.zw, best2.zw < best2.xy);
-    const float nearest = pairs.y < pairs.x ? pairs.y : pairs.x;
-    if (nearest < radius2)
-        atomic_min(&gap2[self], as_uint(nearest));
+    return pairs.y < pairs.x ? pairs.y : pairs.x;
+}
+
+// The search of the entries at a and, when it is before `to` (the end of their bucket), a + 1: the
+// rest of their bucket row up to rowEnd, then the runs [x, y) of `runs` (an empty run is (0, 0)).
+// Each entry's own minimum goes to gap2 once, at the end.
+VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, uint rowEnd, uint2 runs[3],
+                             __global const float *contourLength, float radius2, __global uint *gap2)
+{
+    const bool withB = a + 1 < to;
+    const uint4 entryA = entries[a], entryB = entries[withB ? a + 1 : a];
+    EntryPair pair;
+    pair.x = (float8)((float4)(as_float(entryA.x)), (float4)(as_float(entryB.x)));
+    pair.y = (float8)((float4)(as_float(entryA.y)), (float4)(as_float(entryB.y)));
+    pair.arc = (float8)((float4)(as_float(entryA.z)), (float4)(as_float(entryB.z)));
+    pair.length = (float8)((float4)(contourLength[entryA.w]), (float4)(contourLength[entryB.w]));
+    pair.contour = (uint8)((uint4)(entryA.w), (uint4)(entryB.w));
+    // In the entries' own row each takes the entries after it; elsewhere all. B's lanes take none
+    // when it is missing.
+    const uint noneForB = withB ? 0u : ~0u;
+    const uint8 afterSelf = (uint8)((uint4)(a + 1), (uint4)(withB ? a + 2 : noneForB));
+    const uint8 anywhere = (uint8)((uint4)(0u), (uint4)(noneForB));
+    float8 best2 = nearestInRun(entries, a + 1, rowEnd, afterSelf, &pair, radius2, (float8)(radius2), gap2);
+    for (int r = 0; r < 3; ++r)
+        best2 = nearestInRun(entries, runs[r].x, runs[r].y, anywhere, &pair, radius2, best2, gap2);
+    const float nearestA = smallestOf(best2.lo), nearestB = smallestOf(best2.hi);
+    if (nearestA < radius2)
+        atomic_min(&gap2[a], as_uint(nearestA));
+    if (withB && nearestB < radius2)
+        atomic_min(&gap2[a + 1], as_uint(nearestB));
 }
 
 // ProximityGrid::nearestOtherPart for every grid entry: the squared distance to the nearest vertex
@@ -183,7 +210,8 @@ VF_INLINE void nearestOfEntry(__global const uint4 *entries, uint self, uint row
 // then the three buckets of the next row (the forward half of the 3×3 cells), and both ends of a
 // pair keep the minimum. A work-item takes VF_LANES buckets in turn: the runs to search are the
 // same for every entry of a bucket and come from the bucket's place on the torus, so an entry
-// needs no cell arithmetic, and most buckets are empty. Work-items run in bucket order, so
+// needs no cell arithmetic, and most buckets are empty. A bucket's entries go two at a time
+// (nearestOfPair). Work-items run in bucket order, so
 // neighbouring ones search the same cells, which a CPU device then finds in its caches.
 VF_KERNEL void nearestOtherPart(GRID_ARGS, __global const uint *bucketStart, __global const uint4 *entries,
                                 __global const float *contourLength, __global uint *gap2)
@@ -212,8 +240,8 @@ VF_KERNEL void nearestOtherPart(GRID_ARGS, __global const uint *bucketStart, __g
         runs[1] = (uint2)(bucketStart[below + left], bucketStart[below + (wraps ? lastColumn : right) + 1]);
         if (wraps)
             runs[2] = (uint2)(bucketStart[below], bucketStart[below + right + 1]);
-        for (uint self = from; self < to; ++self)
-            nearestOfEntry(entries, self, rowEnd, runs, contourLength, radius2, gap2);
+        for (uint a = from; a < to; a += 2)
+            nearestOfPair(entries, a, to, rowEnd, runs, contourLength, radius2, gap2);
     }
 }
 
