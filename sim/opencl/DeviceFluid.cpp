@@ -560,7 +560,7 @@ struct DeviceFluid::Impl {
     Impl(Device& device, const FluidSettings& settings);
 
     Field field();
-    // The cell corners: the current field keeps its corner differences after it (flow_fluid.cl).
+    // The cell corners: the current field keeps its vorticity there after its u (flow_fluid.cl).
     std::size_t cornerCount() const { return std::size_t(nx + 1) * (ny + 1); }
     Stencil5 pressureStencil() const;
     Stencil5 viscousStencil(int component, double nuDt) const;
@@ -604,7 +604,7 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
     , program(device.build(joinedKernelSources({"flow.h.cl", "flow_fluid.cl", "fluid.cl"}),
                            "the fluid solver (fluid.cl)", buildOptions()))
     , current{memory.zeros((uCount + cornerCount()) * sizeof(cl_float)),
-              memory.zeros((vCount + cornerCount()) * sizeof(cl_float))}
+              memory.zeros(vCount * sizeof(cl_float))}
     , start{memory.zeros(2 * uCount * sizeof(cl_float)),
             memory.zeros(2 * vCount * sizeof(cl_float))}
     , pressure(device, memory, program, pressureStencil(), float(s.pressureTolerance),
@@ -630,7 +630,8 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
     gradient = overFaces(kernel(program, "subtractGradient", current.u, current.v, pressure.x(), nx,
                                 ny, float(hx), float(hy)));
     halfway = overFaces(kernel(program, "halfway", start.u, start.v, current.u, current.v, nx, ny));
-    corners = overLattice(kernel(program, "cornerDifferences", current.u, current.v, nx, ny), nx + 1, ny + 1);
+    corners = overLattice(kernel(program, "cornerVorticity", current.u, current.v, nx, ny, float(hx), float(hy)),
+                          nx + 1, ny + 1);
     if (s.viscosity == 0.0)
         return;
     viscosity.reserve(2);
@@ -672,7 +673,7 @@ Stencil5 DeviceFluid::Impl::viscousStencil(int component, double nuDt) const
 
 // The order of FluidSolver::step: advection from a copy of the field at the step's start (which
 // binding() also hands out), viscosity, the pen, projection; then the halfway field (FluidFlow)
-// and the corner differences of the new field (the vorticity of the contours' spacing).
+// and the corner vorticity of the new field (for the contours' spacing).
 void DeviceFluid::Impl::step(double dt)
 {
     queue.enqueueCopyBuffer(current.u, start.u, 0, 0, uCount * sizeof(cl_float));

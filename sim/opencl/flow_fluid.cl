@@ -4,8 +4,8 @@
 // start (u0, v0 at t0) and at its end (u1, v1 at t1) as sim/FluidFlow does, so RK4's mid-step
 // samples (eq. 1) see the flow of that moment. u0 and v0 hold, after the start field, the field
 // halfway through the step (FluidFlow's m_middle; DeviceFluid keeps it), which answers s = ½ alone.
-// u1 and v1 hold, after the end field, its corner differences (DeviceFluid keeps them too), so the
-// end field's vorticity is one bilinear sample of each.
+// u1 holds, after the end field, its vorticity at the cell corners (DeviceFluid keeps it too), so
+// the end field's vorticity is one bilinear sample.
 // Comes after flow.h.cl; fluid.cl traces through the same helpers. Every helper is force-inlined:
 // PoCL's vectoriser gives up on kernels that call large functions that are not inlined.
 
@@ -28,16 +28,11 @@ VF_INLINE float macBlend(float dt, float s)
     return dt > 0.0f ? clamp(s, 0.0f, 1.0f) : 1.0f;
 }
 
-// The field's corner differences, stored after the end field (fluid.cl, cornerDifferences): the
-// same values macCornerDu and macCornerDv give, on the (nx + 1) x (ny + 1) corners.
-VF_INLINE __global const float* macCornerDuAfter(__global const float* u, int nx, int ny)
+// The field's vorticity on the (nx + 1) x (ny + 1) cell corners, stored after its u (fluid.cl,
+// cornerVorticity).
+VF_INLINE __global const float* macCornerVorticityAfter(__global const float* u, int nx, int ny)
 {
     return u + (nx + 1) * ny;
-}
-
-VF_INLINE __global const float* macCornerDvAfter(__global const float* v, int nx, int ny)
-{
-    return v + nx * (ny + 1);
 }
 
 // The sampler is written once for a type T with integer type I: float and int for one point
@@ -111,13 +106,12 @@ VF_INLINE __global const float* macCornerDvAfter(__global const float* v, int nx
         }                                                                                      \
     }                                                                                          \
                                                                                                \
-    /* The end field's vorticity at (x, y) from its stored corner differences: the blends of   \
-       macVorticity, of the same values. */                                                    \
+    /* The end field's vorticity at (x, y), blended from its stored corner vorticity as        \
+       macVorticity blends its corner differences. */                                          \
     VF_INLINE T macEndVorticity##S(FLOW_PARAMS, T x, T y)                                       \
     {                                                                                          \
         const MacPoint##S q = macLocate##S(nx + 1, ny + 1, x / hx, y / hy);                    \
-        return macBilinear##S(macCornerDvAfter(v1, nx, ny), nx + 1, q) / hx                    \
-             - macBilinear##S(macCornerDuAfter(u1, nx, ny), nx + 1, q) / hy;                   \
+        return macBilinear##S(macCornerVorticityAfter(u1, nx, ny), nx + 1, q);                 \
     }
 
 VF_DEFINE_MAC_SAMPLER(float, int, , convert_float, convert_int, VF_GATHER_ONE)

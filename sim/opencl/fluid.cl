@@ -685,17 +685,17 @@ KERNEL_1D void halfway(__global float* u0, __global float* v0, __global const fl
     start[halfway + f.index] = 0.5f * (start[f.index] + (f.grid.normalX ? u1 : v1)[f.index]);
 }
 
-// The corner differences of the field (macCornerDu and macCornerDv: du along y, dv along x at every
-// cell corner) after the field in its storage (flow_fluid.cl, macCornerDuAfter): once per step
-// here instead of eight per vorticity sample in every contour vertex's spacing.
-KERNEL_1D void cornerDifferences(__global float* u, __global float* v, int nx, int ny)
+// The field's vorticity dv/dx - du/dy at every cell corner, from macCornerDv and macCornerDu,
+// after the u field in its storage (flow_fluid.cl, macCornerVorticityAfter): once per step here
+// instead of eight corner differences per vorticity sample in every contour vertex's spacing.
+// The bilinear blend of these values is MacVelocity::vorticity's blend of the differences,
+// divided first (equal but for float rounding).
+KERNEL_1D void cornerVorticity(__global float* u, __global const float* v, int nx, int ny, float hx, float hy)
 {
     const int i = get_global_id(0), j = get_global_id(1);
     if (i > nx || j > ny)
         return;
-    const int corner = j * (nx + 1) + i;
-    u[(nx + 1) * ny + corner] = macCornerDu(u, nx, ny, i, j);
-    v[nx * (ny + 1) + corner] = macCornerDv(v, nx, i, j);
+    u[(nx + 1) * ny + j * (nx + 1) + i] = macCornerDv(v, nx, i, j) / hx - macCornerDu(u, nx, ny, i, j) / hy;
 }
 
 // u -= grad p on the interior faces: face (i, j) separates cell (i, j) from the cell before it
