@@ -4,8 +4,8 @@
 // Every contour kernel that needs the velocity takes, in this order, the arguments
 //     __global const float* u0, __global const float* v0,   // staggered field at time t0, then
 //                                                           // (fluid) the field halfway to t1
-//     __global const float* u1, __global const float* v1,   // staggered field at time t1, then
-//                                                           // (fluid) its corner differences
+//     __global const float* u1, __global const float* v1,   // staggered field at time t1; u1
+//                                                           // then (fluid) its corner vorticity
 //     int nx, int ny, float hx, float hy, float t0, float dt
 // (FLOW_ARGS in flow.h.cl) and samples through
 //     float2 flowVelocity(FLOW_PARAMS, float2 p, float s);
@@ -19,7 +19,7 @@
 // ends with VF_DEFINE_LANES_BY_LANE, which samples lane by lane): flow_fluid.cl (bilinear MAC
 // sampling, linear in time between t0 and t1, as sim/FluidFlow, with the halfway field after the
 // start field in u0 and v0 so that RK4's middle stages sample one field, not two, and the end
-// field's corner differences after it in u1 and v1 for its vorticity) or the analytic
+// field's vorticity at the cell corners after it in u1) or the analytic
 // flow's expressions translated to OpenCL C (sim/opencl/AnalyticSource). Analytic flows ignore the
 // buffers, which are then 1-element placeholders.
 #include "sim/opencl/OpenCl.h"
