@@ -204,19 +204,20 @@ VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, uin
 
 // ProximityGrid::nearestOtherPart for every grid entry: the squared distance to the nearest vertex
 // of another part within the search radius (the cell size), or the radius squared when there is
-// none, as float bits in gap2 (from gridScatter). Distance is symmetric and so is "another part"
+// none, as float bits in gap2 (filled before). Distance is symmetric and so is "another part"
 // (same contour, same arcs, same length), so every pair of entries is compared once, by the one
 // that comes first: the entry takes the rest of its own bucket and the next bucket of its row,
 // then the three buckets of the next row (the forward half of the 3×3 cells), and both ends of a
 // pair keep the minimum. A work-item takes VF_LANES buckets in turn: the runs to search are the
 // same for every entry of a bucket and come from the bucket's place on the torus, so an entry
 // needs no cell arithmetic, and most buckets are empty. A bucket's entries go two at a time
-// (nearestOfPair). Work-items run in bucket order, so
-// neighbouring ones search the same cells, which a CPU device then finds in its caches.
+// (nearestOfPair). Work-items run in bucket order, so neighbouring ones search the same cells,
+// which a CPU device then finds in its caches.
 VF_KERNEL void nearestOtherPart(GRID_ARGS, __global const uint *bucketStart, __global const uint4 *entries,
                                 __global const float *contourLength, __global uint *gap2)
 {
-    // The bucket count, a power of two of at least 2^14, is a multiple of VF_LANES.
+    // The bucket count, a power of two of at least 32 (DeviceContours::Impl::grid()), is a
+    // multiple of VF_LANES.
     const uint first = VF_LANES * get_global_id(0);
     if (first >= (1u << (columnBits + rowBits)))
         return;
