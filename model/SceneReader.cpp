@@ -5,6 +5,7 @@
 #include "model/SceneJson.h"
 
 #include "sim/AnalyticFlow.h"
+#include "sim/Crossings.h"
 
 #include <QFile>
 #include <QHash>

@@ -7,6 +7,7 @@
 #include "model/SvgOutline.h"
 #include "model/SvgPathData.h"
 #include "model/SvgSyntax.h"
+#include "sim/Crossings.h"
 
 #include <QFile>
 #include <QFileInfo>

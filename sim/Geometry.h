@@ -26,15 +26,6 @@ Polygon resample(const Polygon& polygon, double maxSpacing);
 // A circle sampled with edges no longer than maxSpacing (at least 8 vertices), positive area.
 Polygon circle(Vec2 center, double radius, double maxSpacing);
 
-// Number of pairs of edges that properly intersect, over all given polygons together: edges of the
-// same polygon count too, except neighbours sharing a vertex. Uses a uniform segment grid.
-std::size_t countCrossings(const std::vector<const Polygon*>& polygons);
-
-// No two edges cross or touch: besides proper crossings, no vertex lies on a non-neighbouring
-// edge (a figure eight pinched at a point, a repeated vertex) and no edge folds back onto its
-// neighbour. What a scene may start from.
-bool isSimple(const Polygon& polygon);
-
 // Largest distance from a vertex of `from` to the closed polyline `to`.
 double directedHausdorffDistance(const Polygon& from, const Polygon& to);
 // Symmetric Hausdorff distance between two closed polylines (vertex-to-segment, both ways).

@@ -2,6 +2,7 @@
 // back loses nothing, a failed save keeps the old file, and shapes become well-formed contours.
 #include "model/SceneFile.h"
 #include "sim/AnalyticFlow.h"
+#include "sim/Crossings.h"
 
 #include "../TestFiles.h"
 

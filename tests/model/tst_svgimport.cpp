@@ -2,6 +2,7 @@
 // curves are flattened within the spacing with vertices on the true curve, transforms, the viewBox
 // fit and colours follow SVG, and bad files give one line naming the problem.
 #include "model/SvgImport.h"
+#include "sim/Crossings.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -1,6 +1,7 @@
 // Text outlines: glyphs become simple, non-crossing, positively oriented contours in canvas units
 // with short edges, counters as contours of their own, scaled by the em height.
 #include "model/TextOutlines.h"
+#include "sim/Crossings.h"
 
 #include <QFontDatabase>
 #include <QtTest>

@@ -7,6 +7,7 @@
 #include "model/SceneRunner.h"
 #include "render/Exporter.h"
 #include "render/XmlNames.h"
+#include "sim/Crossings.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

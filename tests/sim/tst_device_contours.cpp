@@ -4,6 +4,7 @@
 #include "Flows.h"
 
 #include "sim/AnalyticFlow.h"
+#include "sim/Crossings.h"
 #include "sim/ContourTracker.h"
 #include "sim/Simulation.h"
 #include "sim/opencl/DeviceContours.h"

@@ -2,6 +2,7 @@
 // the vertex limit. On every backend.
 #include "Backends.h"
 #include "Flows.h"
+#include "sim/Crossings.h"
 
 #include <glm/geometric.hpp>
 
