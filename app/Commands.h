@@ -1,11 +1,12 @@
 #pragma once
 // The commands of `vectorfluid` (DESIGN §3). Each returns the process exit code:
-// 0 done, 2 bad input (one line on stderr), 3 a limit was hit (what was done so far is written).
+// 0 done, 2 bad input (one line on stderr), 3 a limit was hit (what was done so far is written),
+// 4 `render --check-topology` found contours crossing (what was done so far is written).
 #include <QStringList>
 
 namespace vf::app {
 
-enum ExitCode { Done = 0, BadInput = 2, LimitHit = 3 };
+enum ExitCode { Done = 0, BadInput = 2, LimitHit = 3, TopologyBroken = 4 };
 
 int renderCommand(const QStringList& arguments);
 int devicesCommand(const QStringList& arguments);

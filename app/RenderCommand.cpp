@@ -5,6 +5,7 @@
 #include "model/AtomicFile.h"
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
+#include "sim/Crossings.h"
 #include "sim/opencl/OpenClSimulation.h"
 #include "render/Exporter.h"
 
@@ -16,6 +17,7 @@
 #include <QTextStream>
 
 #include <chrono>
+#include <set>
 #include <stdexcept>
 
 namespace vf::app {
@@ -28,6 +30,7 @@ struct RunTotals {
     double simSeconds = 0.0; // wall time inside simulation steps only
     bool limitHit = false;
     QString limit;           // which limit, when limitHit
+    QString crossing;        // --check-topology: the first crossing found, if any
 };
 
 void fail(const QString& line)
@@ -93,6 +96,52 @@ QString framePath(const QString& dir, qint64 step, qint64 lastStep)
     return QDir(dir).filePath(QStringLiteral("frame-%1.svg").arg(step, digits, 10, QLatin1Char('0')));
 }
 
+// --check-topology: contours must stay simple, and two contours that were apart when the later of
+// them appeared must stay apart. Regions may start overlapping (a scene may stack shapes): their
+// contours then cross from the start, which the flow keeps and the check accepts.
+class TopologyCheck {
+public:
+    // The first crossing the simulation made, in one line, or nothing.
+    QString run(const model::SceneRunner& runner, qint64 step)
+    {
+        const std::vector<sim::Contour> contours = runner.simulation().contours();
+        std::vector<const sim::Polygon*> polygons;
+        for (const sim::Contour& c : contours)
+            polygons.push_back(&c.positions);
+        const std::size_t known = m_known;
+        m_known = contours.size();
+        for (const sim::EdgeCrossing& x : sim::findCrossings(polygons)) {
+            const std::pair pair{x.polygonA, x.polygonB};
+            if (x.polygonA != x.polygonB && x.polygonB >= known)
+                m_overlapping.insert(pair);  // appeared overlapping
+            if (m_overlapping.count(pair) == 0)
+                return describe(runner, contours, x, step);
+        }
+        return {};
+    }
+
+private:
+    static QString describe(const model::SceneRunner& runner, const std::vector<sim::Contour>& contours,
+                            const sim::EdgeCrossing& x, qint64 step)
+    {
+        const auto edge = [&](std::size_t contour, std::size_t index) {
+            return QStringLiteral("'%1' (contour %2, edge %3)")
+                .arg(runner.regionName(contours[contour].region))
+                .arg(contour)
+                .arg(index);
+        };
+        return QStringLiteral("contours cross at step %1 (t = %2 s): %3 and %4 at (%5, %6)")
+            .arg(step)
+            .arg(runner.simulation().time(), 0, 'g', 9)
+            .arg(edge(x.polygonA, x.edgeA), edge(x.polygonB, x.edgeB))
+            .arg(x.point.x, 0, 'g', 9)
+            .arg(x.point.y, 0, 'g', 9);
+    }
+
+    std::size_t m_known = 0;  // contours seen so far; later ones are appended
+    std::set<std::pair<std::size_t, std::size_t>> m_overlapping;
+};
+
 } // namespace
 
 int renderCommand(const QStringList& arguments)
@@ -129,8 +178,15 @@ int renderCommand(const QStringList& arguments)
             totals.limitHit = true;
             totals.limit = vertexLimit;
         }
+        TopologyCheck topology;
+        auto checkTopology = [&] {
+            const qint64 every = options->checkTopologyEvery;
+            if (every > 0 && (totals.steps % every == 0 || totals.steps == steps || totals.limitHit))
+                totals.crossing = topology.run(runner, totals.steps);
+        };
         error = writeFrame(0);
-        while (error.isEmpty() && totals.steps < steps && !totals.limitHit) {
+        checkTopology();
+        while (error.isEmpty() && totals.steps < steps && !totals.limitHit && totals.crossing.isEmpty()) {
             const auto start = std::chrono::steady_clock::now();
             try {
                 if (runner.step(dt).vertexLimitReached) {
@@ -145,6 +201,7 @@ int renderCommand(const QStringList& arguments)
             ++totals.steps;
             totals.vertexSteps += qint64(runner.simulation().vertexCount());
             error = writeFrame(totals.steps);
+            checkTopology();
         }
         const model::Drawing drawing = runner.drawing();
         for (const QString& out : options->outputs) {
@@ -162,6 +219,10 @@ int renderCommand(const QStringList& arguments)
     }
     if (!notice.isEmpty())
         fail(notice);
+    if (!totals.crossing.isEmpty()) {
+        fail(QStringLiteral("%1: %2; the files hold the state at that step").arg(options->scene, totals.crossing));
+        return TopologyBroken;
+    }
     if (totals.limitHit) {
         fail(QStringLiteral("%1: %2 at step %3 of %4; the files hold the state at that step")
                  .arg(options->scene, totals.limit)

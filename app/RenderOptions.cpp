@@ -68,6 +68,9 @@ const std::map<QString, Setter>& valueOptions()
         {"--frames", [](RenderOptions& o, const QString& v) { o.framesDir = v; return QString(); }},
         {"--every", [](RenderOptions& o, const QString& v) { return wholeNumber("--every", v, 1, model::limits::maxSteps, o.every); }},
         {"--stats", [](RenderOptions& o, const QString& v) { o.statsFile = v; return QString(); }},
+        {"--check-topology", [](RenderOptions& o, const QString& v) {
+             return wholeNumber("--check-topology", v, 1, model::limits::maxSteps, o.checkTopologyEvery);
+         }},
     };
     return options;
 }

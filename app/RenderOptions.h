@@ -20,6 +20,7 @@ struct RenderOptions {
     QString framesDir;
     qint64 every = 0;
     QString statsFile;
+    qint64 checkTopologyEvery = 0;  // --check-topology K: an exact crossing check every K steps; 0: none
 };
 
 // Parses the arguments after `render`. On failure returns nullopt and sets `error` to one line.

@@ -58,4 +58,12 @@ Drawing SceneRunner::drawing() const
     return drawingOf(m_scene.canvas, landed, geometry);
 }
 
+QString SceneRunner::regionName(int index) const
+{
+    for (const RegionLook& look : m_script.looks())
+        if (look.simIndex == index)
+            return look.name;
+    return QStringLiteral("region %1").arg(index);
+}
+
 } // namespace vf::model

@@ -31,6 +31,8 @@ public:
     sim::StepReport step(double dt);
 
     Drawing drawing() const;
+    // The name of simulation region `index` (a scene region or a landed drop).
+    QString regionName(int index) const;
 
 private:
     Scene m_scene;
