@@ -7,32 +7,21 @@ namespace vf::sim {
 
 FluidFlow::FluidFlow(const FluidSettings& settings)
     : m_solver(settings)
-    , m_previous(m_solver.velocity())
-    , m_middle(m_previous)
 {
+    keepOnlyTheSolversField();
 }
 
-namespace {
-
-// The field halfway between two fields. Sampling is linear in the field, so sampling this equals
-// blending two samples at s = ½ (to rounding) at half the cost.
-MacVelocity average(const MacVelocity& a, const MacVelocity& b)
+void FluidFlow::keepOnlyTheSolversField()
 {
-    MacVelocity mean = a;
-    for (std::size_t i = 0; i < mean.u.size(); ++i)
-        mean.u[i] = 0.5 * (a.u[i] + b.u[i]);
-    for (std::size_t i = 0; i < mean.v.size(); ++i)
-        mean.v[i] = 0.5 * (a.v[i] + b.v[i]);
-    return mean;
+    m_start = m_middle = m_end = StreamField::of(m_solver.velocity());
 }
-
-} // namespace
 
 void FluidFlow::advance(double dt)
 {
-    m_previous = m_solver.velocity();
+    m_start = std::move(m_end);
     m_solver.step(dt);
-    m_middle = average(m_previous, m_solver.velocity());
+    m_end = StreamField::of(m_solver.velocity());
+    m_middle = StreamField::average(m_start, m_end);
     m_stepStart = m_time;
     m_time += dt;
 }
@@ -41,7 +30,7 @@ void FluidFlow::advance(double dt)
 // the last step's start and middle matter no more and become the current one.
 void FluidFlow::setTime(double t)
 {
-    m_previous = m_middle = m_solver.velocity();
+    keepOnlyTheSolversField();
     m_stepStart = m_time = t;
 }
 
@@ -50,7 +39,7 @@ void FluidFlow::setState(const FluidState* state)
     m_solver.setVelocity(state ? state->velocity : FluidSolver::atRest(m_solver.settings()));
     if (state)
         m_solver.setPressure(state->pressure);
-    m_previous = m_middle = m_solver.velocity();
+    keepOnlyTheSolversField();
 }
 
 double FluidFlow::blend(double t) const
@@ -67,23 +56,23 @@ auto FluidFlow::interpolate(double s, Sample sample) const
 {
     constexpr double near = 1e-9;
     if (s > 1.0 - near)
-        return sample(m_solver.velocity());
+        return sample(m_end);
     if (std::abs(s - 0.5) < near)
         return sample(m_middle);
-    const auto start = sample(m_previous);
+    const auto start = sample(m_start);
     if (s < near)
         return start;
-    return start + s * (sample(m_solver.velocity()) - start);
+    return start + s * (sample(m_end) - start);
 }
 
 Vec2 FluidFlow::velocity(Vec2 p, double t) const
 {
-    return interpolate(blend(t), [p](const MacVelocity& f) { return f.sample(p); });
+    return interpolate(blend(t), [p](const StreamField& f) { return f.velocity(p); });
 }
 
 double FluidFlow::vorticity(Vec2 p, double t) const
 {
-    return interpolate(blend(t), [p](const MacVelocity& f) { return f.vorticity(p); });
+    return interpolate(blend(t), [p](const StreamField& f) { return f.vorticity(p); });
 }
 
 } // namespace vf::sim

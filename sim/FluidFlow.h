@@ -1,9 +1,12 @@
 #pragma once
 // The fluid solver seen as a Flow: velocity between two solver steps is interpolated linearly in
 // time, so RK4's mid-step samples (eq. 1) see the flow of that moment rather than a frozen field.
+// The contours move through the curl of the fields' stream functions (sim/StreamFunction.h): C¹
+// and divergence-free, where the MAC field's own bilinear interpolation is neither.
 #include "sim/Flow.h"
 #include "sim/FluidSolver.h"
 #include "sim/SimulationState.h"
+#include "sim/StreamFunction.h"
 
 namespace vf::sim {
 
@@ -29,10 +32,12 @@ private:
     double blend(double t) const;  // 0 at the step's start, 1 at its end
     template <typename Sample>
     auto interpolate(double s, Sample sample) const;
+    void keepOnlyTheSolversField();  // no step in progress: start, middle and end are the same
 
     FluidSolver m_solver;
-    MacVelocity m_previous;  // the field at the step's start
-    MacVelocity m_middle;    // halfway through the step
+    StreamField m_start;   // the field at the step's start
+    StreamField m_middle;  // halfway through the step
+    StreamField m_end;     // the solver's
     double m_stepStart = 0.0;
     double m_time = 0.0;
 };

@@ -560,8 +560,9 @@ struct DeviceFluid::Impl {
     Impl(Device& device, const FluidSettings& settings);
 
     Field field();
-    // The cell corners: the current field keeps its vorticity there after its u (flow_fluid.cl).
-    std::size_t cornerCount() const { return std::size_t(nx + 1) * (ny + 1); }
+    // One stream function lattice: the cell corners and a ghost corner past each wall (flow_fluid.cl).
+    std::size_t streamCorners() const { return std::size_t(nx + 3) * (ny + 3); }
+    void computeStreamFunction(bool fromRest);
     Stencil5 pressureStencil() const;
     Stencil5 viscousStencil(int component, double nuDt) const;
     void step(double dt);
@@ -579,13 +580,14 @@ struct DeviceFluid::Impl {
     Memory memory;
     cl::Program program;
     Field current;
-    Field start;  // the field at the step's start, then the halfway field (flow_fluid.cl)
+    Field start;       // the field at the step's start (the solver advects from it)
+    cl::Buffer stream; // the stream functions at the step's start, halfway, and end (flow_fluid.cl)
     Field forward;  // MacCormack: the semi-Lagrangian result, traced back
     DevicePcg pressure;
     std::vector<DevicePcg> viscosity;  // u, v; none for an inviscid fluid
     Launch advect;
     std::vector<Launch> correct;  // MacCormack's second pass, if any
-    Launch stylus, divergence, gradient, halfway, corners;
+    Launch stylus, divergence, gradient, streamFunction;
     std::vector<Launch> gather, scatter;
     std::vector<StylusSegment> pending;
 };
@@ -603,10 +605,9 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
     , memory(device, "the " + std::to_string(s.nx) + " x " + std::to_string(s.ny) + " fluid grid")
     , program(device.build(joinedKernelSources({"flow.h.cl", "flow_fluid.cl", "fluid.cl"}),
                            "the fluid solver (fluid.cl)", buildOptions()))
-    , current{memory.zeros((uCount + cornerCount()) * sizeof(cl_float)),
-              memory.zeros(vCount * sizeof(cl_float))}
-    , start{memory.zeros(2 * uCount * sizeof(cl_float)),
-            memory.zeros(2 * vCount * sizeof(cl_float))}
+    , current(field())
+    , start(field())
+    , stream(memory.zeros(3 * streamCorners() * sizeof(cl_float)))
     , pressure(device, memory, program, pressureStencil(), float(s.pressureTolerance),
                kPressureRoundoffFloor)
 {
@@ -629,9 +630,8 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
                              nx, ny);
     gradient = overFaces(kernel(program, "subtractGradient", current.u, current.v, pressure.x(), nx,
                                 ny, float(hx), float(hy)));
-    halfway = overFaces(kernel(program, "halfway", start.u, start.v, current.u, current.v, nx, ny));
-    corners = overLattice(kernel(program, "cornerVorticity", current.u, current.v, nx, ny, float(hx), float(hy)),
-                          nx + 1, ny + 1);
+    streamFunction = overLattice(
+        kernel(program, "streamFunction", current.u, current.v, nx, ny, float(hx), float(hy), 0, stream), nx + 3, 1);
     if (s.viscosity == 0.0)
         return;
     viscosity.reserve(2);
@@ -671,9 +671,19 @@ Stencil5 DeviceFluid::Impl::viscousStencil(int component, double nuDt) const
     return {f.mx(), f.my(), 1.0, nuDt / (hx * hx), nuDt / (hy * hy), f.normalX, !f.normalX};
 }
 
-// The order of FluidSolver::step: advection from a copy of the field at the step's start (which
-// binding() also hands out), viscosity, the pen, projection; then the halfway field (FluidFlow)
-// and the corner vorticity of the new field (for the contours' spacing).
+// The stream functions the contours move through (FluidFlow): the end's becomes the start's, the
+// new field's is the end's, and the halfway one lies between; from rest, all three are the field's.
+void DeviceFluid::Impl::computeStreamFunction(bool fromRest)
+{
+    if (!fromRest)
+        queue.enqueueCopyBuffer(stream, stream, 2 * streamCorners() * sizeof(cl_float), 0,
+                                streamCorners() * sizeof(cl_float));
+    streamFunction.kernel.setArg(6, cl_int(fromRest));
+    enqueue(queue, streamFunction);
+}
+
+// The order of FluidSolver::step: advection from a copy of the field at the step's start, viscosity,
+// the pen, projection; then the stream functions of the step (for the contours).
 void DeviceFluid::Impl::step(double dt)
 {
     queue.enqueueCopyBuffer(current.u, start.u, 0, 0, uCount * sizeof(cl_float));
@@ -694,8 +704,7 @@ void DeviceFluid::Impl::step(double dt)
     enqueue(queue, divergence);
     pressure.solve(iterationCap(nx, ny));
     enqueue(queue, gradient);
-    enqueue(queue, halfway);
-    enqueue(queue, corners);
+    computeStreamFunction(false);
 }
 
 void DeviceFluid::Impl::diffuse(double dt)
@@ -751,10 +760,7 @@ void DeviceFluid::step(double dt)
 FlowBinding DeviceFluid::binding(double t0, double t1) const
 {
     FlowBinding b;
-    b.u0 = m->start.u;
-    b.v0 = m->start.v;
-    b.u1 = m->current.u;
-    b.v1 = m->current.v;
+    b.field = m->stream;
     b.nx = m->nx;
     b.ny = m->ny;
     b.hx = float(m->hx);
@@ -785,8 +791,7 @@ void DeviceFluid::writeVelocity(const MacVelocity& velocity)
             writeFloats(m->queue, field->u, velocity.u);
             writeFloats(m->queue, field->v, velocity.v);
         }
-        enqueue(m->queue, m->halfway);  // halfway between the field and itself: the field
-        enqueue(m->queue, m->corners);
+        m->computeStreamFunction(true);
         // As FluidSolver::setVelocity: the warm-start pressure belongs to the old history; dropping
         // it makes every later step a function of this velocity alone.
         m->pressure.clearSolution();

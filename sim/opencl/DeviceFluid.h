@@ -22,13 +22,13 @@ public:
     // As FluidSolver::addStylus: applied during the next step().
     void addStylus(Vec2 from, Vec2 to, double radius, double duration);
 
-    // One step. Keeps the field of the step's start and the halfway field, so binding() can blend
-    // across the step.
+    // One step. Keeps the stream functions of the step's start, middle and end, so binding() can
+    // blend across the step.
     void step(double dt);
 
-    // The fields at the start (u0, v0, each followed by the halfway field) and end (u1, v1) of the
-    // last step, with t0, t1 set from `t0` and `t1` (the caller's clock). Before the first step all
-    // are the current field.
+    // The stream functions at the start, halfway and end of the last step (FlowBinding.h), with t0,
+    // t1 set from `t0` and `t1` (the caller's clock). Before the first step all are the current
+    // field's.
     FlowBinding binding(double t0, double t1) const;
 
     // Blocking readbacks, for tests and snapshots: never on the per-step path.

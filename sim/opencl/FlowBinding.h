@@ -2,10 +2,7 @@
 // The contract between the flow and the contour kernels on the device.
 //
 // Every contour kernel that needs the velocity takes, in this order, the arguments
-//     __global const float* u0, __global const float* v0,   // staggered field at time t0, then
-//                                                           // (fluid) the field halfway to t1
-//     __global const float* u1, __global const float* v1,   // staggered field at time t1; u1
-//                                                           // then (fluid) its corner vorticity
+//     __global const float* flowField,   // the flow's data; (fluid) its stream functions
 //     int nx, int ny, float hx, float hy, float t0, float dt
 // (FLOW_ARGS in flow.h.cl) and samples through
 //     float2 flowVelocity(FLOW_PARAMS, float2 p, float s);
@@ -16,29 +13,26 @@
 // where s is how far through the span [t0, t0 + dt] (0 … 1; an empty span means its end). The
 // span's length is computed here in double: t1 − t0 in float would lose digits as time grows.
 // The program prepends one definition of these functions (a flow without lane samplers of its own
-// ends with VF_DEFINE_LANES_BY_LANE, which samples lane by lane): flow_fluid.cl (bilinear MAC
-// sampling, linear in time between t0 and t1, as sim/FluidFlow, with the halfway field after the
-// start field in u0 and v0 so that RK4's middle stages sample one field, not two, and the end
-// field's vorticity at the cell corners after it in u1) or the analytic
-// flow's expressions translated to OpenCL C (sim/opencl/AnalyticSource). Analytic flows ignore the
-// buffers, which are then 1-element placeholders.
+// ends with VF_DEFINE_LANES_BY_LANE, which samples lane by lane): flow_fluid.cl (the curl of the
+// cubic B-spline stream function of the fluid's field, as sim/StreamFunction, linear in time
+// between t0 and t1 as sim/FluidFlow; flowField holds the stream functions at the step's start,
+// halfway through it and at its end, so RK4's middle stages sample one field, not two) or the
+// analytic flow's expressions translated to OpenCL C (sim/opencl/AnalyticSource), which ignore
+// flowField, then a 1-element placeholder.
 #include "sim/opencl/OpenCl.h"
 
 namespace vf::sim::opencl {
 
 struct FlowBinding {
-    cl::Buffer u0, v0, u1, v1;
+    cl::Buffer field;
     int nx = 1, ny = 1;
     float hx = 1.0f, hy = 1.0f;
     double t0 = 0.0, t1 = 0.0;
 
-    // Sets the 10 flow arguments of `kernel` starting at argument `first`; returns the next index.
+    // Sets the 7 flow arguments of `kernel` starting at argument `first`; returns the next index.
     cl_uint bind(cl::Kernel& kernel, cl_uint first) const
     {
-        kernel.setArg(first++, u0);
-        kernel.setArg(first++, v0);
-        kernel.setArg(first++, u1);
-        kernel.setArg(first++, v1);
+        kernel.setArg(first++, field);
         kernel.setArg(first++, nx);
         kernel.setArg(first++, ny);
         kernel.setArg(first++, hx);

@@ -32,8 +32,7 @@ OpenClSimulation::OpenClSimulation(const SimulationSettings& settings, std::opti
     if (isFluid(settings)) {
         m_fluid = std::make_unique<DeviceFluid>(m_device, settings.fluid);
     } else {
-        const cl::Buffer placeholder(m_device.context(), CL_MEM_READ_ONLY, sizeof(float));
-        m_placeholders.u0 = m_placeholders.v0 = m_placeholders.u1 = m_placeholders.v1 = placeholder;
+        m_placeholders.field = cl::Buffer(m_device.context(), CL_MEM_READ_ONLY, sizeof(float));
     }
     m_contours = std::make_unique<DeviceContours>(m_device, settings.tracking, flowSource(settings));
 }

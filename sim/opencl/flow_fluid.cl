@@ -1,181 +1,151 @@
-// The fluid as the flow of the contour kernels (sim/opencl/FlowBinding.h): the staggered MAC field
-// sampled as sim/FluidSolver.h samples it (MacVelocity::sample and ::vorticity, same clamping and
-// corner differences), in float32, and blended linearly in time between the field at the step's
-// start (u0, v0 at t0) and at its end (u1, v1 at t1) as sim/FluidFlow does, so RK4's mid-step
-// samples (eq. 1) see the flow of that moment. u0 and v0 hold, after the start field, the field
-// halfway through the step (FluidFlow's m_middle; DeviceFluid keeps it), which answers s = ½ alone.
-// u1 holds, after the end field, its vorticity at the cell corners (DeviceFluid keeps it too), so
-// the end field's vorticity is one bilinear sample.
-// Comes after flow.h.cl; fluid.cl traces through the same helpers. Every helper is force-inlined:
-// PoCL's vectoriser gives up on kernels that call large functions that are not inlined.
+// The fluid as the flow of the contour kernels (sim/opencl/FlowBinding.h): the curl of the cubic
+// B-spline over the stream function ψ at the cell corners, as sim/StreamFunction.h samples it (the
+// same reflection at the walls and clamping), in float32, and blended linearly in time between the
+// step's start (s = 0) and end (s = 1) as sim/FluidFlow does, so RK4's mid-step samples (eq. 1) see
+// the flow of that moment. flowField holds three ψ lattices of (nx + 3) × (ny + 3) corners (one
+// ghost corner past each wall): at the step's start, halfway through it, and at its end
+// (DeviceFluid keeps them, fluid.cl's streamFunction computes them); the halfway lattice answers
+// s = ½ alone. Comes after flow.h.cl. Every helper is force-inlined: PoCL's vectoriser gives up on
+// kernels that call large functions that are not inlined.
 
-// The halfway field, stored after the start field.
-VF_INLINE __global const float* macHalfwayU(__global const float* u0, int nx, int ny)
-{
-    return u0 + (nx + 1) * ny;
-}
+// Corners of one ψ lattice, and where each lattice starts in flowField.
+VF_INLINE int streamStride(int nx) { return nx + 3; }
+VF_INLINE int streamCorners(int nx, int ny) { return (nx + 3) * (ny + 3); }
+#define STREAM_START 0
+#define STREAM_HALFWAY 1
+#define STREAM_END 2
 
-VF_INLINE __global const float* macHalfwayV(__global const float* v0, int nx, int ny)
-{
-    return v0 + nx * (ny + 1);
-}
-
-// s clamped to [0, 1]; 1 (the end field) when the span is empty, as FluidFlow::blend. RK4
-// (contours.cl) passes its stages' s exactly (0, ½, 1), so its middle stages sample the halfway
-// field alone.
-VF_INLINE float macBlend(float dt, float s)
+// s clamped to [0, 1]; 1 (the end) when the span is empty, as FluidFlow::blend. RK4 (contours.cl)
+// passes its stages' s exactly (0, ½, 1), so its middle stages sample the halfway field alone.
+VF_INLINE float streamBlend(float dt, float s)
 {
     return dt > 0.0f ? clamp(s, 0.0f, 1.0f) : 1.0f;
 }
 
-// The field's vorticity on the (nx + 1) x (ny + 1) cell corners, stored after its u (fluid.cl,
-// cornerVorticity).
-VF_INLINE __global const float* macCornerVorticityAfter(__global const float* u, int nx, int ny)
-{
-    return u + (nx + 1) * ny;
-}
-
 // The sampler is written once for a type T with integer type I: float and int for one point
-// (the names below without a suffix), floatv and intv for lanes (suffix Lanes). `GATHER(f, k)` reads
-// f[k] for each of T's values.
+// (suffix Point), floatv and intv for lanes (suffix Lanes). `GATHER(f, k)` reads f[k] for each of
+// T's values. No float2 here: PoCL's loop vectoriser refuses them.
 #define VF_GATHER_ONE(f, k) (f)[k]
-#define VF_DEFINE_MAC_SAMPLER(T, I, S, CONVERT_T, CONVERT_I, GATHER)                             \
-    /* A position on a row-major cols x rows lattice (cols, rows >= 2): the lattice point (i, j) \
-       at the low corner of the square holding it and the fractions across                     \
-       (detail::LatticePoint). No float2 here: PoCL's loop vectoriser refuses them. */         \
+#define VF_DEFINE_STREAM_SAMPLER(T, I, S, CONVERT_T, CONVERT_I, GATHER)                          \
+    /* detail::reflectInto: a lattice coordinate in [−n, 2n] reflected into [0, n], clamped     \
+       beyond (NaN to 0: it fails `0 < g`); *sign is −1 where it was reflected. */              \
+    VF_INLINE T streamReflect##S(T g, int n, T *sign)                                          \
+    {                                                                                          \
+        const I below = isless(g, (T)(0.0f)), above = isgreater(g, (T)(n));                   \
+        *sign = select((T)(1.0f), (T)(-1.0f), below | above);                                  \
+        g = select(g, -g, below);                                                              \
+        g = select(g, (T)(2.0f * n) - g, above);                                               \
+        return fmin(select((T)(0.0f), g, isless((T)(0.0f), g)), (T)(n));                       \
+    }                                                                                          \
+                                                                                               \
+    /* The 4 × 4 corners around a point and the spline's weights there (StreamField::Stencil): \
+       w the B-spline, d its derivative, dd its second derivative, along x and along y. */     \
     typedef struct {                                                                           \
-        I i, j;                                                                                \
-        T fx, fy;                                                                              \
-    } MacPoint##S;                                                                             \
+        I corner;                                                                              \
+        T flipX, flipY;                                                                        \
+        T wx[4], dx[4], ddx[4], wy[4], dy[4], ddy[4];                                           \
+    } StreamStencil##S;                                                                        \
                                                                                                \
-    /* As detail::locate: positions outside are clamped onto the lattice, NaN to the low end   \
-       (it fails `0 < g`), so no position, however bad, indexes out of bounds. */              \
-    VF_INLINE MacPoint##S macLocate##S(int cols, int rows, T gx, T gy)                         \
+    VF_INLINE void streamWeights##S(T t, T *w, T *d, T *dd)                                    \
     {                                                                                          \
-        gx = fmin(select((T)(0.0f), gx, isless((T)(0.0f), gx)), (T)(cols - 1));                \
-        gy = fmin(select((T)(0.0f), gy, isless((T)(0.0f), gy)), (T)(rows - 1));                \
-        MacPoint##S q;                                                                         \
-        q.i = min(CONVERT_I(gx), (I)(cols - 2));                                               \
-        q.j = min(CONVERT_I(gy), (I)(rows - 2));                                               \
-        q.fx = gx - CONVERT_T(q.i);                                                            \
-        q.fy = gy - CONVERT_T(q.j);                                                            \
-        return q;                                                                              \
+        const T u = 1.0f - t, t2 = t * t, t3 = t2 * t;                                         \
+        w[0] = u * u * u / 6.0f;                                                               \
+        w[1] = (3.0f * t3 - 6.0f * t2 + 4.0f) / 6.0f;                                          \
+        w[2] = (-3.0f * t3 + 3.0f * t2 + 3.0f * t + 1.0f) / 6.0f;                              \
+        w[3] = t3 / 6.0f;                                                                      \
+        d[0] = -0.5f * u * u;                                                                  \
+        d[1] = 0.5f * (3.0f * t2 - 4.0f * t);                                                  \
+        d[2] = 0.5f * (-3.0f * t2 + 2.0f * t + 1.0f);                                          \
+        d[3] = 0.5f * t2;                                                                      \
+        dd[0] = u;                                                                             \
+        dd[1] = 3.0f * t - 2.0f;                                                               \
+        dd[2] = 1.0f - 3.0f * t;                                                               \
+        dd[3] = t;                                                                             \
     }                                                                                          \
                                                                                                \
-    /* Bilinear interpolation across the square at q of the values at its corners. */          \
-    VF_INLINE T macBlendCorners##S(MacPoint##S q, T low, T right, T down, T diagonal)          \
+    VF_INLINE StreamStencil##S streamStencil##S(int nx, int ny, float hx, float hy, T x, T y)  \
     {                                                                                          \
-        return (1.0f - q.fy) * ((1.0f - q.fx) * low + q.fx * right)                            \
-             + q.fy * ((1.0f - q.fx) * down + q.fx * diagonal);                                \
+        StreamStencil##S s;                                                                    \
+        const T gx = streamReflect##S(x / hx, nx, &s.flipX);                                   \
+        const T gy = streamReflect##S(y / hy, ny, &s.flipY);                                   \
+        const I i = min(CONVERT_I(gx), (I)(nx - 1)), j = min(CONVERT_I(gy), (I)(ny - 1));      \
+        streamWeights##S(gx - CONVERT_T(i), s.wx, s.dx, s.ddx);                                \
+        streamWeights##S(gy - CONVERT_T(j), s.wy, s.dy, s.ddy);                                \
+        s.corner = j * streamStride(nx) + i;                                                   \
+        return s;                                                                              \
     }                                                                                          \
                                                                                                \
-    VF_INLINE T macBilinear##S(__global const float *f, int cols, MacPoint##S q)               \
+    /* StreamField::velocity of the lattice at psi. */                                         \
+    VF_INLINE void streamVelocity##S(__global const float *psi, int nx, float hx, float hy,    \
+                                     StreamStencil##S s, T *ux, T *uy)                         \
     {                                                                                          \
-        const I k = q.j * cols + q.i;                                                          \
-        return macBlendCorners##S(q, GATHER(f, k), GATHER(f, k + 1), GATHER(f, k + cols),      \
-                                  GATHER(f, k + cols + 1));                                    \
+        T dPsiDy = 0.0f, dPsiDx = 0.0f;                                                        \
+        for (int b = 0; b < 4; ++b) {                                                          \
+            const I k = s.corner + b * streamStride(nx);                                       \
+            const T p0 = GATHER(psi, k), p1 = GATHER(psi, k + 1), p2 = GATHER(psi, k + 2),     \
+                    p3 = GATHER(psi, k + 3);                                                   \
+            dPsiDy += s.dy[b] * (s.wx[0] * p0 + s.wx[1] * p1 + s.wx[2] * p2 + s.wx[3] * p3);   \
+            dPsiDx += s.wy[b] * (s.dx[0] * p0 + s.dx[1] * p1 + s.dx[2] * p2 + s.dx[3] * p3);   \
+        }                                                                                      \
+        *ux = s.flipX * dPsiDy / hy;                                                           \
+        *uy = -s.flipY * dPsiDx / hx;                                                          \
     }                                                                                          \
                                                                                                \
-    /* The velocity at (gx, gy) in cell units (x / hx, y / hy): u lives at (i, j + 1/2), v at  \
-       (i + 1/2, j). */                                                                        \
-    VF_INLINE T macSampleU##S(__global const float *u, int nx, int ny, T gx, T gy)             \
+    /* StreamField::vorticity of the lattice at psi: −∇²ψ. */                                  \
+    VF_INLINE T streamVorticity##S(__global const float *psi, int nx, float hx, float hy,      \
+                                   StreamStencil##S s)                                         \
     {                                                                                          \
-        return macBilinear##S(u, nx + 1, macLocate##S(nx + 1, ny, gx, gy - 0.5f));             \
-    }                                                                                          \
-                                                                                               \
-    VF_INLINE T macSampleV##S(__global const float *v, int nx, int ny, T gx, T gy)             \
-    {                                                                                          \
-        return macBilinear##S(v, nx, macLocate##S(nx, ny + 1, gx - 0.5f, gy));                 \
+        T psiXX = 0.0f, psiYY = 0.0f;                                                          \
+        for (int b = 0; b < 4; ++b) {                                                          \
+            const I k = s.corner + b * streamStride(nx);                                       \
+            const T p0 = GATHER(psi, k), p1 = GATHER(psi, k + 1), p2 = GATHER(psi, k + 2),     \
+                    p3 = GATHER(psi, k + 3);                                                   \
+            psiYY += s.ddy[b] * (s.wx[0] * p0 + s.wx[1] * p1 + s.wx[2] * p2 + s.wx[3] * p3);   \
+            psiXX += s.wy[b] * (s.ddx[0] * p0 + s.ddx[1] * p1 + s.ddx[2] * p2 + s.ddx[3] * p3); \
+        }                                                                                      \
+        return -s.flipX * s.flipY * (psiXX / (hx * hx) + psiYY / (hy * hy));                   \
     }                                                                                          \
                                                                                                \
     /* The velocity at (x, y) `along` of the way through the step. RK4 asks at s = 0, ½, ½, 1, \
-       each answered by one field (FluidFlow::interpolate); the work-items of a launch share   \
-       t, so the branches agree. */                                                            \
-    VF_INLINE void macVelocity##S(FLOW_PARAMS, T x, T y, float along, T *ux, T *uy)            \
+       each answered by one lattice (FluidFlow::interpolate); the work-items of a launch share \
+       s, so the branches agree. */                                                            \
+    VF_INLINE void flowVelocity##S(FLOW_PARAMS, T x, T y, float along, T *ux, T *uy)           \
     {                                                                                          \
-        const float s = macBlend(dt, along);                                                   \
-        const T gx = x / hx, gy = y / hy;                                                      \
-        __global const float *u = s == 0.0f ? u0 : s == 0.5f ? macHalfwayU(u0, nx, ny) : u1;   \
-        __global const float *v = s == 0.0f ? v0 : s == 0.5f ? macHalfwayV(v0, nx, ny) : v1;   \
-        *ux = macSampleU##S(u, nx, ny, gx, gy);                                                \
-        *uy = macSampleV##S(v, nx, ny, gx, gy);                                                \
+        const float s = streamBlend(dt, along);                                                \
+        const StreamStencil##S st = streamStencil##S(nx, ny, hx, hy, x, y);                    \
+        const int lattice = s == 0.0f ? STREAM_START : s == 0.5f ? STREAM_HALFWAY : STREAM_END; \
+        streamVelocity##S(flowField + lattice * streamCorners(nx, ny), nx, hx, hy, st, ux, uy); \
         if (s != 0.0f && s != 0.5f && s != 1.0f) {                                             \
-            const T x0 = macSampleU##S(u0, nx, ny, gx, gy), y0 = macSampleV##S(v0, nx, ny, gx, gy); \
+            T x0, y0;                                                                          \
+            streamVelocity##S(flowField, nx, hx, hy, st, &x0, &y0);                            \
             *ux = x0 + s * (*ux - x0);                                                         \
             *uy = y0 + s * (*uy - y0);                                                         \
         }                                                                                      \
     }                                                                                          \
                                                                                                \
-    /* The end field's vorticity at (x, y), blended from its stored corner vorticity as        \
-       macVorticity blends its corner differences. */                                          \
-    VF_INLINE T macEndVorticity##S(FLOW_PARAMS, T x, T y)                                       \
+    VF_INLINE T flowVorticity##S(FLOW_PARAMS, T x, T y, float along)                           \
     {                                                                                          \
-        const MacPoint##S q = macLocate##S(nx + 1, ny + 1, x / hx, y / hy);                    \
-        return macBilinear##S(macCornerVorticityAfter(u1, nx, ny), nx + 1, q);                 \
+        const float s = streamBlend(dt, along);                                                \
+        const StreamStencil##S st = streamStencil##S(nx, ny, hx, hy, x, y);                    \
+        const int lattice = s == 0.0f ? STREAM_START : s == 0.5f ? STREAM_HALFWAY : STREAM_END; \
+        const T w = streamVorticity##S(flowField + lattice * streamCorners(nx, ny), nx, hx, hy, st); \
+        if (s == 0.0f || s == 0.5f || s == 1.0f)                                               \
+            return w;                                                                          \
+        const T w0 = streamVorticity##S(flowField, nx, hx, hy, st);                            \
+        return w0 + s * (w - w0);                                                              \
     }
 
-VF_DEFINE_MAC_SAMPLER(float, int, , convert_float, convert_int, VF_GATHER_ONE)
-VF_DEFINE_MAC_SAMPLER(floatv, intv, Lanes, VF_CONVERT_FLOATV, VF_CONVERT_INTV, gatherLanes)
-
-// As detail::cornerDifferences: v across cell corner (i, j) along x and u across it along y,
-// central around the corner, the nearest interior difference on the canvas edge.
-VF_INLINE float macCornerDv(__global const float* v, int nx, int i, int j)
-{
-    const int a = clamp(i - 1, 0, nx - 2);
-    return v[j * nx + a + 1] - v[j * nx + a];
-}
-
-VF_INLINE float macCornerDu(__global const float* u, int nx, int ny, int i, int j)
-{
-    const int b = clamp(j - 1, 0, ny - 2);
-    return u[(b + 1) * (nx + 1) + i] - u[b * (nx + 1) + i];
-}
-
-// dv/dx - du/dy, bilinear from the cell corners (MacVelocity::vorticity).
-VF_INLINE float macVorticity(__global const float* u, __global const float* v, int nx, int ny,
-                             float hx, float hy, float2 p)
-{
-    const MacPoint q = macLocate(nx + 1, ny + 1, p.x / hx, p.y / hy);
-    const float dv = macBlendCorners(q, macCornerDv(v, nx, q.i, q.j),
-                                     macCornerDv(v, nx, q.i + 1, q.j),
-                                     macCornerDv(v, nx, q.i, q.j + 1),
-                                     macCornerDv(v, nx, q.i + 1, q.j + 1));
-    const float du = macBlendCorners(q, macCornerDu(u, nx, ny, q.i, q.j),
-                                     macCornerDu(u, nx, ny, q.i + 1, q.j),
-                                     macCornerDu(u, nx, ny, q.i, q.j + 1),
-                                     macCornerDu(u, nx, ny, q.i + 1, q.j + 1));
-    return dv / hx - du / hy;
-}
+VF_DEFINE_STREAM_SAMPLER(float, int, Point, convert_float, convert_int, VF_GATHER_ONE)
+VF_DEFINE_STREAM_SAMPLER(floatv, intv, Lanes, VF_CONVERT_FLOATV, VF_CONVERT_INTV, gatherLanes)
 
 VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float s)
 {
     float x, y;
-    macVelocity(FLOW_PASS, p.x, p.y, s, &x, &y);
+    flowVelocityPoint(FLOW_PASS, p.x, p.y, s, &x, &y);
     return (float2)(x, y);
 }
 
-VF_INLINE void flowVelocityLanes(FLOW_PARAMS, floatv x, floatv y, float s, floatv *u, floatv *v)
+VF_INLINE float flowVorticity(FLOW_PARAMS, float2 p, float s)
 {
-    macVelocityLanes(FLOW_PASS, x, y, s, u, v);
-}
-
-VF_INLINE float flowVorticity(FLOW_PARAMS, float2 p, float along)
-{
-    const float s = macBlend(dt, along);
-    if (s == 0.5f)
-        return macVorticity(macHalfwayU(u0, nx, ny), macHalfwayV(v0, nx, ny), nx, ny, hx, hy, p);
-    const float end = macEndVorticity(FLOW_PASS, p.x, p.y);
-    if (s == 1.0f)
-        return end;
-    const float start = macVorticity(u0, v0, nx, ny, hx, hy, p);
-    return start + s * (end - start);
-}
-
-VF_DEFINE_VORTICITY_BY_LANE(macVorticityByLane)
-
-// The end field's vorticity (all that refinement asks for) in lanes; any other moment lane by lane.
-VF_INLINE floatv flowVorticityLanes(FLOW_PARAMS, floatv x, floatv y, float along)
-{
-    return macBlend(dt, along) == 1.0f ? macEndVorticityLanes(FLOW_PASS, x, y)
-                                       : macVorticityByLane(FLOW_PASS, x, y, along);
+    return flowVorticityPoint(FLOW_PASS, p.x, p.y, s);
 }

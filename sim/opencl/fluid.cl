@@ -1,7 +1,7 @@
 // The stable-fluids step of sim/FluidSolver.cpp in float32 (advection, implicit viscosity, stylus,
 // pressure projection), and the preconditioned CG of sim/LinearSolve.cpp it solves with. Host side
 // and the reasons behind the solver's shape: sim/opencl/DeviceFluid.cpp. Comes after flow.h.cl and
-// flow_fluid.cl (MAC sampling). The host defines VF_LOCAL (work-group size of every kernel over
+// flow_fluid.cl (the stream function's layout). The host defines VF_LOCAL (work-group size of every kernel over
 // cells or faces), VF_GROUP (size of the single-work-group kernels), VF_SMOOTHING_SWEEPS and
 // VF_COARSEST_SWEEPS.
 //
@@ -15,6 +15,48 @@
 
 #define KERNEL_1D __kernel __attribute__((reqd_work_group_size(VF_LOCAL, 1, 1)))
 #define SINGLE_GROUP __kernel __attribute__((reqd_work_group_size(VF_GROUP, 1, 1)))
+
+// ---- MAC sampling -------------------------------------------------------------------------------
+
+// A position on a row-major cols x rows lattice (cols, rows >= 2): the lattice point (i, j) at the
+// low corner of the square holding it and the fractions across (detail::LatticePoint). As
+// detail::locate: positions outside are clamped onto the lattice, NaN to the low end (it fails
+// `0 < g`), so no position, however bad, indexes out of bounds.
+typedef struct {
+    int i, j;
+    float fx, fy;
+} MacPoint;
+
+VF_INLINE MacPoint macLocate(int cols, int rows, float gx, float gy)
+{
+    gx = fmin(select(0.0f, gx, isless(0.0f, gx)), (float)(cols - 1));
+    gy = fmin(select(0.0f, gy, isless(0.0f, gy)), (float)(rows - 1));
+    MacPoint q;
+    q.i = min(convert_int(gx), cols - 2);
+    q.j = min(convert_int(gy), rows - 2);
+    q.fx = gx - (float)q.i;
+    q.fy = gy - (float)q.j;
+    return q;
+}
+
+VF_INLINE float macBilinear(__global const float* f, int cols, MacPoint q)
+{
+    const int k = q.j * cols + q.i;
+    return (1.0f - q.fy) * ((1.0f - q.fx) * f[k] + q.fx * f[k + 1])
+         + q.fy * ((1.0f - q.fx) * f[k + cols] + q.fx * f[k + cols + 1]);
+}
+
+// The velocity at (gx, gy) in cell units (x / hx, y / hy), as MacVelocity::sample: u lives at
+// (i, j + 1/2), v at (i + 1/2, j).
+VF_INLINE float macSampleU(__global const float* u, int nx, int ny, float gx, float gy)
+{
+    return macBilinear(u, nx + 1, macLocate(nx + 1, ny, gx, gy - 0.5f));
+}
+
+VF_INLINE float macSampleV(__global const float* v, int nx, int ny, float gx, float gy)
+{
+    return macBilinear(v, nx, macLocate(nx, ny + 1, gx - 0.5f, gy));
+}
 
 // ---- Faces --------------------------------------------------------------------------------------
 
@@ -671,31 +713,48 @@ KERNEL_1D void divergence(__global const float* u, __global const float* v, int 
     storePartial(partials, PARTIAL_SCALE, scale, 1, scratch);
 }
 
-// The field halfway through the step, (start + end) / 2 (FluidFlow's m_middle), into the second
-// half of the start field's storage (flow_fluid.cl): sampling is linear in the field, so sampling
-// it equals blending two samples at s = ½ (to rounding) at half the cost.
-KERNEL_1D void halfway(__global float* u0, __global float* v0, __global const float* u1,
-                       __global const float* v1, int nx, int ny)
+// The stream function of the field (u, v) on the corners with their ghosts (flow_fluid.cl), as
+// StreamField::of: the fluxes summed along the bottom wall, then up each column, one value along
+// the top wall, and odd reflection about every wall. It becomes the lattice at the step's end; the
+// one halfway is the mean of it and the start lattice, which `fromRest` also overwrites (a field
+// with no step behind it: start, halfway and end are one). One work-item per padded column: a
+// ghost column computes the two columns it reflects.
+KERNEL_1D void streamFunction(__global const float* u, __global const float* v, int nx, int ny, float hx, float hy,
+                              int fromRest, __global float* stream)
 {
-    const Face f = thisFace(nx, ny);
-    if (!f.valid)
+    const int c = get_global_id(0) - 1;  // corner column −1 … nx + 1
+    if (c > nx + 1)
         return;
-    __global float* start = f.grid.normalX ? u0 : v0;
-    const int halfway = f.grid.normalX ? (nx + 1) * ny : nx * (ny + 1);
-    start[halfway + f.index] = 0.5f * (start[f.index] + (f.grid.normalX ? u1 : v1)[f.index]);
-}
-
-// The field's vorticity dv/dx - du/dy at every cell corner, from macCornerDv and macCornerDu,
-// after the u field in its storage (flow_fluid.cl, macCornerVorticityAfter): once per step here
-// instead of eight corner differences per vorticity sample in every contour vertex's spacing.
-// The bilinear blend of these values is MacVelocity::vorticity's blend of the differences,
-// divided first (equal but for float rounding).
-KERNEL_1D void cornerVorticity(__global float* u, __global const float* v, int nx, int ny, float hx, float hy)
-{
-    const int i = get_global_id(0), j = get_global_id(1);
-    if (i > nx || j > ny)
-        return;
-    u[(nx + 1) * ny + j * (nx + 1) + i] = macCornerDv(v, nx, i, j) / hx - macCornerDu(u, nx, ny, i, j) / hy;
+    const int stride = streamStride(nx), corners = streamCorners(nx, ny);
+    const int column = clamp(c, 0, nx), mirror = c < 0 ? 1 : c > nx ? nx - 1 : column;
+    float bottom = 0.0f, bottomMirror = 0.0f;
+    for (int i = 0; i < max(column, mirror); ++i) {
+        const float flux = -v[i] * hx;
+        bottom += i < column ? flux : 0.0f;
+        bottomMirror += i < mirror ? flux : 0.0f;
+    }
+    __global float* end = stream + STREAM_END * corners;
+    float psi = bottom, psiMirror = bottomMirror, top = 0.0f;
+    for (int j = 0; j <= ny; ++j) {  // corner row j is lattice row j + 1
+        if (j > 0) {
+            psi += u[(j - 1) * (nx + 1) + column] * hy;
+            psiMirror += u[(j - 1) * (nx + 1) + mirror] * hy;
+        }
+        end[(j + 1) * stride + c + 1] = c == column ? psi : 2.0f * psi - psiMirror;
+    }
+    // The top wall takes corner (0, ny)'s value: the sum of u up column 0.
+    for (int j = 0; j < ny; ++j)
+        top += u[j * (nx + 1)] * hy;
+    end[(ny + 1) * stride + c + 1] = top;
+    // Ghost rows: odd reflection about the bottom and top walls.
+    end[c + 1] = 2.0f * end[stride + c + 1] - end[2 * stride + c + 1];
+    end[(ny + 2) * stride + c + 1] = 2.0f * top - end[ny * stride + c + 1];
+    for (int j = 0; j < ny + 3; ++j) {
+        const int k = j * stride + c + 1;
+        if (fromRest)
+            stream[STREAM_START * corners + k] = end[k];
+        stream[STREAM_HALFWAY * corners + k] = 0.5f * (stream[STREAM_START * corners + k] + end[k]);
+    }
 }
 
 // u -= grad p on the interior faces: face (i, j) separates cell (i, j) from the cell before it

@@ -106,8 +106,7 @@ private slots:
         cl::Buffer placeholder(device->context(), CL_MEM_READ_ONLY, sizeof(float));
         cl::Kernel kernel(program, "sample");
         cl_uint arg = 0;
-        for (int i = 0; i < 4; ++i)
-            kernel.setArg(arg++, placeholder);
+        kernel.setArg(arg++, placeholder);  // the flow's field, which an analytic flow ignores
         for (int i : {1, 1})
             kernel.setArg(arg++, i);
         for (float f : {1.0f, 1.0f, 0.0f, 1.0f})  // hx, hy, and the span [0, 1]: s is the time itself

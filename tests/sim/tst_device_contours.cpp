@@ -120,7 +120,7 @@ public:
     FlowBinding binding(double t0, double t1) const
     {
         FlowBinding b;
-        b.u0 = b.v0 = b.u1 = b.v1 = m_placeholder;
+        b.field = m_placeholder;
         b.nx = int(m_flowId);
         b.t0 = t0;
         b.t1 = t1;

@@ -3,6 +3,7 @@
 // fields binding() hands to the contour kernels and their sampling in flow_fluid.cl, bad input.
 // Skipped, with the reason, when no OpenCL device can be opened.
 #include "sim/FluidSolver.h"
+#include "sim/StreamFunction.h"
 #include "sim/opencl/DeviceFluid.h"
 #include "sim/opencl/KernelSources.h"
 #include "sim/opencl/Launch.h"
@@ -145,13 +146,27 @@ struct FlowSample {
 };
 
 // The flow FluidFlow gives at (p, t) between the fields `start` at t0 and `end` at t1.
-FlowSample blended(const MacVelocity& start, const MacVelocity& end, double t0, double t1, Vec2 p,
+FlowSample blended(const MacVelocity& startField, const MacVelocity& endField, double t0, double t1, Vec2 p,
                    double t)
 {
+    const StreamField start = StreamField::of(startField), end = StreamField::of(endField);
     const double span = t1 - t0;
     const double s = span > 0.0 ? std::clamp((t - t0) / span, 0.0, 1.0) : 1.0;
-    return {start.sample(p) + s * (end.sample(p) - start.sample(p)),
+    return {start.velocity(p) + s * (end.velocity(p) - start.velocity(p)),
             start.vorticity(p) + s * (end.vorticity(p) - start.vorticity(p))};
+}
+
+// The largest difference between the stream function lattice `lattice` of the three in `stream`
+// (start, halfway, end) and `expected`, relative to the largest |ψ|.
+double streamDifference(const std::vector<double>& stream, int lattice, const StreamField& expected)
+{
+    double d = 0.0, size = 0.0;
+    const std::size_t corners = expected.psi.size();
+    for (std::size_t k = 0; k < corners; ++k) {
+        d = std::max(d, std::abs(stream[lattice * corners + k] - expected.psi[k]));
+        size = std::max(size, std::abs(expected.psi[k]));
+    }
+    return d / size;
 }
 
 } // namespace
@@ -397,29 +412,29 @@ void TestDeviceFluid::deterministicAndSnapshotsReplay()
     QVERIFY(!isZero(replayed.u));
 }
 
-// The contour kernels get the field of the step's start as (u0, v0) and of its end as (u1, v1).
+// The contour kernels get the stream functions of the step's start, of its middle and of its end
+// (sim/StreamFunction), in float32.
 void TestDeviceFluid::bindingHoldsStepStartAndEnd()
 {
     const FluidSettings s = settings(24, 16, 1.5, 1.0, 5e-4);
     DeviceFluid fluid(*m_device, s);
     fluid.writeVelocity(waves(s, 0.3));
-    const MacVelocity before = fluid.readVelocity();
-    const auto read = [&](const cl::Buffer& buffer, std::size_t count) {
-        return readBuffer(*m_device, buffer, count);
-    };
+    const StreamField before = StreamField::of(fluid.readVelocity());
+    const std::size_t corners = before.psi.size();
     FlowBinding b = fluid.binding(0.0, 0.0);
-    QCOMPARE(read(b.u0, before.u.size()), before.u);
-    QCOMPARE(read(b.v1, before.v.size()), before.v);
+    std::vector<double> stream = readBuffer(*m_device, b.field, 3 * corners);
+    for (int lattice = 0; lattice < 3; ++lattice)
+        QVERIFY(streamDifference(stream, lattice, before) < 1e-6);
 
     stir(fluid, 0);
     fluid.step(kDt);
     b = fluid.binding(1.0, 1.0 + kDt);
-    const MacVelocity after = fluid.readVelocity();
-    QVERIFY(after.u != before.u);
-    QCOMPARE(read(b.u0, before.u.size()), before.u);
-    QCOMPARE(read(b.v0, before.v.size()), before.v);
-    QCOMPARE(read(b.u1, after.u.size()), after.u);
-    QCOMPARE(read(b.v1, after.v.size()), after.v);
+    const StreamField after = StreamField::of(fluid.readVelocity());
+    stream = readBuffer(*m_device, b.field, 3 * corners);
+    QVERIFY(streamDifference(stream, 2, before) > 1e-3);  // the step changed the field
+    QVERIFY(streamDifference(stream, 0, before) < 1e-6);
+    QVERIFY(streamDifference(stream, 1, StreamField::average(before, after)) < 1e-6);
+    QVERIFY(streamDifference(stream, 2, after) < 1e-6);
     QCOMPARE(b.nx, s.nx);
     QCOMPARE(b.ny, s.ny);
     QCOMPARE(b.hx, float(s.width / s.nx));
@@ -427,10 +442,10 @@ void TestDeviceFluid::bindingHoldsStepStartAndEnd()
     QCOMPARE(b.t1, 1.0 + kDt);
 }
 
-// flowVelocity and flowVorticity of flow_fluid.cl against MacVelocity::sample and ::vorticity of
+// flowVelocity and flowVorticity of flow_fluid.cl against StreamField::velocity and ::vorticity of
 // the same float32 fields, blended in time as FluidFlow blends them: everywhere on the canvas,
-// outside it (clamped) and at times before, inside and after the step, and with t1 == t0 (the end
-// field alone).
+// outside it (mirrored) and at times before, inside and after the step, and with t1 == t0 (the
+// end field alone).
 void TestDeviceFluid::flowSamplingMatchesReference()
 {
     const FluidSettings s = settings(20, 12, 2.0, 0.75, 0.0);

@@ -1,0 +1,122 @@
+#pragma once
+// The velocity that carries the contours: the curl of a stream function ψ, a cubic B-spline over
+// ψ at the cell corners of the MAC grid.
+//
+// Why not the MAC field's own bilinear interpolation: its gradient jumps across every line through
+// the cell centres, so the image of a short straight edge under one step of the flow bends there
+// by about dt·|jump of ∇u|·(edge length), a few micrometres of a unit canvas. Where the two sides
+// of a thin filament are closer than that, the edges between advected vertices cross although the
+// true curves never do. The cubic B-spline makes ψ twice continuously differentiable, so the
+// velocity is C¹ and a short edge's image deviates from its chord only to second order; and a
+// velocity that is the curl of ψ has zero divergence everywhere, not only at cell centres, so
+// the flow itself keeps every region's area (up to RK4's error).
+//
+// ψ at the corners comes from the discretely divergence-free MAC field by summing fluxes:
+// ψ(i, j) − ψ(i, j − 1) = u(i, j − ½)·hy up each column from the bottom wall, along which
+// ψ(i, 0) − ψ(i − 1, 0) = −v(i − ½, 0)·hx; then u = ∂ψ/∂y, v = −∂ψ/∂x at every face (to the
+// projection's tolerance; ψ takes one value along the top wall, so nothing flows through it). ψ is extended one corner past each wall by odd reflection about its wall
+// value, ψ(−k) = 2ψ(0) − ψ(k), so the spline keeps ψ constant along the wall (no flow through it)
+// with zero second normal derivative (free slip, as the solver's walls). A point outside the
+// canvas takes the mirror image of the flow inside (reflected position, normal component
+// negated), which continues it smoothly across the wall.
+#include "sim/FluidSolver.h"
+
+#include <vector>
+
+namespace vf::sim {
+
+struct StreamField {
+    int nx = 0, ny = 0;
+    double hx = 1.0, hy = 1.0;
+    std::vector<double> psi;  // (nx + 3) × (ny + 3), row-major: corner (i, j) at (j + 1)(nx + 3) + i + 1
+
+    static StreamField of(const MacVelocity& field);
+    // (a + b) / 2, the field halfway between two (ψ is linear in the velocity).
+    static StreamField average(const StreamField& a, const StreamField& b);
+
+    Vec2 velocity(Vec2 p) const;
+    // ∂v/∂x − ∂u/∂y = −∇²ψ (eq. 5's vorticity), continuous.
+    double vorticity(Vec2 p) const;
+
+private:
+    struct Stencil;
+    Stencil stencilAt(Vec2 p) const;
+};
+
+// The cubic B-spline weights of the four lattice points around a position t ∈ [0, 1] past the
+// second of them, and of the spline's first and second derivatives.
+struct SplineWeights {
+    double w[4], dw[4], ddw[4];
+};
+
+inline SplineWeights splineWeights(double t)
+{
+    const double s = 1.0 - t, t2 = t * t, t3 = t2 * t;
+    return {{s * s * s / 6.0, (3.0 * t3 - 6.0 * t2 + 4.0) / 6.0, (-3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0) / 6.0, t3 / 6.0},
+            {-0.5 * s * s, 0.5 * (3.0 * t2 - 4.0 * t), 0.5 * (-3.0 * t2 + 2.0 * t + 1.0), 0.5 * t2},
+            {s, 3.0 * t - 2.0, 1.0 - 3.0 * t, t}};
+}
+
+namespace detail {
+
+// Reflects a lattice coordinate in [−n, 2n] into [0, n] (outside it: clamped, NaN to 0); `sign`
+// becomes −1 where it was reflected.
+inline double reflectInto(double g, int n, double& sign)
+{
+    sign = (g < 0.0 || g > n) ? -1.0 : 1.0;
+    g = g < 0.0 ? -g : g > n ? 2.0 * n - g : g;
+    return std::min(0.0 < g ? g : 0.0, double(n));
+}
+
+} // namespace detail
+
+// The 4 × 4 corners around a point (reflected into the canvas) and the spline's weights there.
+struct StreamField::Stencil {
+    const double* corner;  // corner (i − 1, j − 1); rows nx + 3 apart
+    int stride;
+    SplineWeights x, y;
+    double flipX, flipY;   // −1 where the point was reflected across a wall
+};
+
+inline StreamField::Stencil StreamField::stencilAt(Vec2 p) const
+{
+    Stencil s;
+    const double gx = detail::reflectInto(p.x / hx, nx, s.flipX);
+    const double gy = detail::reflectInto(p.y / hy, ny, s.flipY);
+    const int i = std::min(int(gx), nx - 1), j = std::min(int(gy), ny - 1);
+    s.x = splineWeights(gx - i);
+    s.y = splineWeights(gy - j);
+    s.stride = nx + 3;
+    s.corner = psi.data() + std::ptrdiff_t(j) * s.stride + i;
+    return s;
+}
+
+inline Vec2 StreamField::velocity(Vec2 p) const
+{
+    const Stencil s = stencilAt(p);
+    double dPsiDy = 0.0, dPsiDx = 0.0;
+    const double* row = s.corner;
+    for (int b = 0; b < 4; ++b, row += s.stride) {
+        const double along = s.x.w[0] * row[0] + s.x.w[1] * row[1] + s.x.w[2] * row[2] + s.x.w[3] * row[3];
+        const double across = s.x.dw[0] * row[0] + s.x.dw[1] * row[1] + s.x.dw[2] * row[2] + s.x.dw[3] * row[3];
+        dPsiDy += s.y.dw[b] * along;
+        dPsiDx += s.y.w[b] * across;
+    }
+    return {s.flipX * dPsiDy / hy, -s.flipY * dPsiDx / hx};
+}
+
+inline double StreamField::vorticity(Vec2 p) const
+{
+    const Stencil s = stencilAt(p);
+    double psiXX = 0.0, psiYY = 0.0;
+    const double* row = s.corner;
+    for (int b = 0; b < 4; ++b, row += s.stride) {
+        const double along = s.x.w[0] * row[0] + s.x.w[1] * row[1] + s.x.w[2] * row[2] + s.x.w[3] * row[3];
+        const double curving = s.x.ddw[0] * row[0] + s.x.ddw[1] * row[1] + s.x.ddw[2] * row[2] + s.x.ddw[3] * row[3];
+        psiYY += s.y.ddw[b] * along;
+        psiXX += s.y.w[b] * curving;
+    }
+    return -s.flipX * s.flipY * (psiXX / (hx * hx) + psiYY / (hy * hy));
+}
+
+} // namespace vf::sim
