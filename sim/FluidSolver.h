@@ -31,8 +31,8 @@ struct MacVelocity {
     std::vector<double> u;  // (nx + 1) * ny
     std::vector<double> v;  // nx * (ny + 1)
 
-    Vec2 sample(Vec2 p) const;      // bilinear, clamped to the canvas
-    double vorticity(Vec2 p) const; // dv/dx - du/dy, bilinear from cell corners
+    Vec2 sample(Vec2 p) const;  // bilinear, clamped to the canvas (the solver's own; contours
+                                // move through sim/StreamFunction)
 
     friend bool operator==(const MacVelocity&, const MacVelocity&) = default;
 };
@@ -123,20 +123,6 @@ inline double bilinear(const double* f, int cols, const LatticePoint& q)
          + q.fy * ((1.0 - q.fx) * r1[0] + q.fx * r1[1]);
 }
 
-// The differences behind the vorticity dv/dx - du/dy at cell corner (i, j), 0 <= i <= nx,
-// 0 <= j <= ny: v across the corner (x) and u across it (y), central around the corner. On the
-// canvas edge the nearest interior difference is used instead (clamped indices), so the field
-// stays smooth there and needs no branches. Dividing by the cell size is left to the caller, once.
-inline Vec2 cornerDifferences(const MacVelocity& m, int i, int j)
-{
-    const int a = std::clamp(i - 1, 0, m.nx - 2);
-    const int b = std::clamp(j - 1, 0, m.ny - 2);
-    const double* vRow = m.v.data() + std::ptrdiff_t(j) * m.nx;
-    const double* uCol = m.u.data() + i;
-    const std::ptrdiff_t uStride = m.nx + 1;
-    return {vRow[a + 1] - vRow[a], uCol[(b + 1) * uStride] - uCol[b * uStride]};
-}
-
 // The velocity at (gx, gy) in cell units (x / hx, y / hy): u lives at (i, j + 1/2), v at
 // (i + 1/2, j).
 inline Vec2 sampleCells(const MacVelocity& m, double gx, double gy)
@@ -150,16 +136,6 @@ inline Vec2 sampleCells(const MacVelocity& m, double gx, double gy)
 inline Vec2 MacVelocity::sample(Vec2 p) const
 {
     return detail::sampleCells(*this, p.x / hx, p.y / hy);
-}
-
-inline double MacVelocity::vorticity(Vec2 p) const
-{
-    const detail::LatticePoint q = detail::locate(nx + 1, ny + 1, p.x / hx, p.y / hy);
-    const Vec2 d = (1.0 - q.fy) * ((1.0 - q.fx) * detail::cornerDifferences(*this, q.i, q.j)
-                                   + q.fx * detail::cornerDifferences(*this, q.i + 1, q.j))
-                 + q.fy * ((1.0 - q.fx) * detail::cornerDifferences(*this, q.i, q.j + 1)
-                           + q.fx * detail::cornerDifferences(*this, q.i + 1, q.j + 1));
-    return d.x / hx - d.y / hy;
 }
 
 } // namespace vf::sim

@@ -82,7 +82,6 @@ private slots:
     void degenerateStrokesDoNothing();
     void highViscosityStopsRightAfterStroke();
     void sampleReproducesLinearField();
-    void vorticityOfSolidBodyRotation();
     void badSettingsThrow();
     void deterministicAndSnapshotsReplay();
     void largeGrid();
@@ -287,28 +286,6 @@ void TestFluid::sampleReproducesLinearField()
     QCOMPARE(m.sample({3.0, -2.0}), m.sample({2.0, 0.0}));
     const double nan = std::numeric_limits<double>::quiet_NaN();
     QVERIFY(std::isfinite(m.sample({nan, nan}).x));
-    QVERIFY(std::isfinite(m.vorticity({nan, 1e300})));
-}
-
-void TestFluid::vorticityOfSolidBodyRotation()
-{
-    const double omega = 1.7;
-    const Vec2 c{0.8, 0.4};
-    FluidSolver fluid(settings(24, 16, 1.5, 1.0, 0.0));
-    MacVelocity m = fluid.velocity();
-    // u = omega x (p - c) with omega out of the plane.
-    for (int j = 0; j < m.ny; ++j)
-        for (int i = 0; i <= m.nx; ++i)
-            m.u[std::size_t(j) * (m.nx + 1) + i] = -omega * ((j + 0.5) * m.hy - c.y);
-    for (int j = 0; j <= m.ny; ++j)
-        for (int i = 0; i < m.nx; ++i)
-            m.v[std::size_t(j) * m.nx + i] = omega * ((i + 0.5) * m.hx - c.x);
-    // Everywhere on the canvas, edges and corners included.
-    for (int k = 0; k <= 400; ++k) {
-        const Vec2 p{1.5 * (k % 21) / 20.0, 1.0 * (k / 21) / 19.0};
-        QVERIFY2(std::abs(m.vorticity(p) - 2.0 * omega) < 1e-10,
-                 qPrintable(QString("at (%1, %2): %3").arg(p.x).arg(p.y).arg(m.vorticity(p))));
-    }
 }
 
 void TestFluid::badSettingsThrow()
