@@ -234,11 +234,14 @@ double ContourTracker::strainInSpacings(const Flow& flow, double t, double dt) c
 
 bool ContourTracker::advect(const Flow& flow, double t, double dt)
 {
-    for (Contour& c : m_contours) {
-        c.previous = c.positions;
-        for (std::size_t i = 0; i < c.positions.size(); ++i)
-            c.positions[i] = rungeKutta4(flow, c.previous[i], t, dt);
-        requireFinite(c);
+    {
+        const PhaseClock::Scope timing(m_clock, Phase::Advect);
+        for (Contour& c : m_contours) {
+            c.previous = c.positions;
+            for (std::size_t i = 0; i < c.positions.size(); ++i)
+                c.positions[i] = rungeKutta4(flow, c.previous[i], t, dt);
+            requireFinite(c);
+        }
     }
     return refineAll([&flow, t, dt](Vec2 p) { return rungeKutta4(flow, p, t, dt); }, flow, t + dt);
 }
@@ -256,7 +259,7 @@ bool ContourTracker::applyMotion(const MotionMap& map, const Flow& flow, double 
 
 bool ContourTracker::refineAll(const MotionMap& map, const Flow& flow, double t)
 {
-    computeSpacing(m_contours, flow, t, m_settings, m_grid);
+    computeSpacing(m_contours, flow, t, m_settings, m_grid, m_clock);
     bool withinBudget = true;
     std::size_t total = m_vertexCount;
     for (Contour& c : m_contours) {
@@ -265,8 +268,10 @@ bool ContourTracker::refineAll(const MotionMap& map, const Flow& flow, double t)
         withinBudget = refine(c, map, budget) && withinBudget;
         requireFinite(c);  // split and recentred vertices come from the motion too
         total += c.positions.size();
-        if (m_settings.areaCorrection)
+        if (m_settings.areaCorrection) {
+            const PhaseClock::Scope timing(m_clock, Phase::Area);
             correctArea(c.positions, c.targetArea);
+        }
     }
     m_vertexCount = total;
     return withinBudget;
@@ -284,11 +289,16 @@ bool ContourTracker::refine(Contour& contour, const MotionMap& map, std::size_t 
     bool settled = false;
     for (int round = 0; round < maxRounds && withinBudget && !settled; ++round) {
         bool changed = false;
-        withinBudget = splitPass(ring, start, map, budget, changed);
+        {
+            const PhaseClock::Scope timing(m_clock, Phase::Split);
+            withinBudget = splitPass(ring, start, map, budget, changed);
+        }
+        const PhaseClock::Scope timing(m_clock, Phase::Collapse);
         start = collapsePass(ring, start, map, changed);
         settled = !changed;
     }
     if (!settled && withinBudget) {
+        const PhaseClock::Scope timing(m_clock, Phase::Split);
         bool changed = false;
         withinBudget = splitPass(ring, start, map, budget, changed);
     }

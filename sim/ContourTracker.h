@@ -2,6 +2,7 @@
 // Lagrangian contour tracking (paper §3.1, §3.3): RK4 advection (eq. 1), refinement by the
 // time-rewinding split (eq. 2) and collapse, adaptive spacing, optional area correction.
 #include "sim/Flow.h"
+#include "sim/PhaseClock.h"
 #include "sim/ProximityGrid.h"
 #include "sim/Tracking.h"
 
@@ -47,6 +48,9 @@ public:
     // Replaces all contours (snapshot restore); counts are recomputed.
     void setContours(std::vector<Contour> contours);
 
+    // Charges the phases of every later motion to `clock` (Simulation::enablePhaseTiming).
+    void setPhaseClock(PhaseClock* clock) { m_clock = clock; }
+
 private:
     bool refineAll(const MotionMap& map, const Flow& flow, double t);
     bool refine(Contour& contour, const MotionMap& map, std::size_t budget);
@@ -55,6 +59,7 @@ private:
     std::vector<Contour> m_contours;
     std::size_t m_vertexCount = 0;
     ProximityGrid m_grid;
+    PhaseClock* m_clock = nullptr;
 };
 
 // One classic fourth-order Runge–Kutta step through `flow` (eq. 1).

@@ -96,10 +96,19 @@ std::optional<RegionsCopy> ReferenceSimulation::takeRegions(bool)
     return std::exchange(m_regionsCopy, std::nullopt);
 }
 
+void ReferenceSimulation::enablePhaseTiming()
+{
+    m_phases.enable();
+    m_tracker.setPhaseClock(&m_phases);
+}
+
 StepReport ReferenceSimulation::step(double dt)
 {
     StepReport report;
-    report.substeps = substepCount(m_tracker.strainInSpacings(*m_flow, time(), dt), m_settings.tracking);
+    {
+        const PhaseClock::Scope timing(&m_phases, Phase::Advect);  // the strain samples the flow
+        report.substeps = substepCount(m_tracker.strainInSpacings(*m_flow, time(), dt), m_settings.tracking);
+    }
     const double h = dt / report.substeps;
     for (int k = 0; k < report.substeps; ++k) {
         // Each substep gets its share of the pen's path, so the force follows the pen.
@@ -108,7 +117,10 @@ StepReport ReferenceSimulation::step(double dt)
             m_fluid->solver().addStylus(p.from, p.to, p.radius, p.duration);
         }
         const double t = time();
-        m_flow->advance(h);
+        {
+            const PhaseClock::Scope timing(&m_phases, Phase::Fluid);
+            m_flow->advance(h);
+        }
         if (!m_tracker.advect(*m_flow, t, h)) {
             report.vertexLimitReached = true;
             break;

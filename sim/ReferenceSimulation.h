@@ -29,6 +29,10 @@ public:
     std::optional<MacVelocity> velocity() const override;
     SimulationState snapshot() const override;
     void restore(const SimulationState& state) override;
+    void enablePhaseTiming() override;
+
+    // The flow the contours move through (the benchmarks' naive loop samples it too).
+    const Flow& flow() const { return *m_flow; }
 
 protected:
     void growTargetAreasAround(Vec2 p, double area) override { m_tracker.growTargetAreasAround(p, area); }

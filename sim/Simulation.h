@@ -3,6 +3,7 @@
 // double-precision C++) is always built; an OpenCL backend implements the same interface.
 #include "sim/FluidSolver.h"
 #include "sim/Geometry.h"
+#include "sim/PhaseClock.h"
 #include "sim/SimulationState.h"
 #include "sim/Tracking.h"
 
@@ -107,7 +108,14 @@ public:
     virtual SimulationState snapshot() const = 0;
     virtual void restore(const SimulationState& state) = 0;
 
+    // Where the steps' time goes, phase by phase, for the session benchmarks (sim/PhaseClock.h). Off
+    // until enabled; on a device, each phase then waits for its work, which costs a little.
+    virtual void enablePhaseTiming() = 0;
+    const PhaseClock::Seconds& phaseSeconds() const { return m_phases.seconds(); }
+
 protected:
+    PhaseClock m_phases;
+
     // The two backend parts of drop(): raise the area-correction target of every contour winding
     // around `p` by `area`, and move every contour by the drop's push, refining under it (false
     // when refinement stopped at max_vertices).

@@ -53,7 +53,7 @@ void smoothAlongContour(std::vector<double>& d, const std::vector<double>& weigh
 } // namespace
 
 void computeSpacing(std::vector<Contour>& contours, const Flow& flow, double t,
-                    const TrackingSettings& settings, ProximityGrid& grid)
+                    const TrackingSettings& settings, ProximityGrid& grid, PhaseClock* clock)
 {
     const double dMax = settings.maxSpacing;
     if (!settings.adaptive) {
@@ -61,8 +61,17 @@ void computeSpacing(std::vector<Contour>& contours, const Flow& flow, double t,
             c.spacing.assign(c.positions.size(), dMax);
         return;
     }
-    if (settings.proximity)
+    for (Contour& c : contours)
+        c.spacing.resize(c.positions.size());
+    if (settings.proximity) {
+        // Each vertex's distance to another part, kept in its spacing until the factor replaces it.
+        const PhaseClock::Scope timing(clock, Phase::Proximity);
         grid.build(contours, settings.proximityRadius());
+        for (std::size_t ci = 0; ci < contours.size(); ++ci)
+            for (std::size_t i = 0; i < contours[ci].spacing.size(); ++i)
+                contours[ci].spacing[i] = grid.nearestOtherPart(ci, i);
+    }
+    const PhaseClock::Scope timing(clock, Phase::Spacing);
 
     const double curvatureLength = settings.curvatureLength();
     const double proximityLength = settings.proximityLength();
@@ -70,20 +79,15 @@ void computeSpacing(std::vector<Contour>& contours, const Flow& flow, double t,
     const double epsilon = settings.minSpacing();
     const std::vector<double> weights = gaussianWeights(settings.smoothingRadius);
     std::vector<double> scratch;
-    for (std::size_t ci = 0; ci < contours.size(); ++ci) {
-        Contour& c = contours[ci];
+    for (Contour& c : contours) {
         const auto& p = c.positions;
         const std::size_t n = p.size();
-        c.spacing.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
             const double kappa = discreteCurvature(p[(i + n - 1) % n], p[i], p[(i + 1) % n]);
             // exp(-a)·exp(-b) of eqs. 4 and 5 as one exponential.
             double factor = std::exp(-kappa * curvatureLength - std::abs(flow.vorticity(p[i], t)) / vorticityScale);
-            if (settings.proximity) {
-                const double distance = grid.nearestOtherPart(ci, i);
-                if (distance < INFINITY)
-                    factor *= 1.0 - std::exp(-distance / proximityLength);
-            }
+            if (settings.proximity && c.spacing[i] < INFINITY)
+                factor *= 1.0 - std::exp(-c.spacing[i] / proximityLength);
             c.spacing[i] = dMax * factor;
         }
         smoothAlongContour(c.spacing, weights, scratch);

@@ -1,6 +1,7 @@
 #pragma once
 // The adaptive vertex spacing d_i of paper §3.3.
 #include "sim/Flow.h"
+#include "sim/PhaseClock.h"
 #include "sim/ProximityGrid.h"
 #include "sim/Tracking.h"
 
@@ -15,8 +16,9 @@ double discreteCurvature(Vec2 before, Vec2 at, Vec2 after);
 // Fills every contour's `spacing` for the flow at time t:
 //   d_i = d_max · exp(-|κ_i|·Lκ) · exp(-|ω(v_i)|/ω_ref) · (1 - exp(-dist_i/Lp)) + ε    (eqs. 3, 4, 5, 7)
 // then smooths d_i along the contour with a Gaussian window (eq. 6). In uniform mode d_i = d_max.
-// `grid` is scratch storage reused between calls.
+// `grid` is scratch storage reused between calls; `clock`, if any, is charged the proximity search
+// and the rest apart.
 void computeSpacing(std::vector<Contour>& contours, const Flow& flow, double t,
-                    const TrackingSettings& settings, ProximityGrid& grid);
+                    const TrackingSettings& settings, ProximityGrid& grid, PhaseClock* clock = nullptr);
 
 } // namespace vf::sim

@@ -221,6 +221,7 @@ struct DeviceContours::Impl {
 
     std::array<Outlines, 2> staging;
     std::uint64_t requests = 0;
+    PhaseClock* clock = nullptr;
 };
 
 DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, const std::string& flowSource)
@@ -350,13 +351,18 @@ bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, b
     strainSamplesKept = false;
     if (vertices == 0)
         return true;
-    queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
-    launch(queue, advect, laneGroups(vertices), flow, motion, front.motion, cl_uint(vertices), back.motion,
-           cl_int(startKnown), status);
+    {
+        const PhaseClock::Scope timing(clock, Phase::Advect);
+        queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
+        launch(queue, advect, laneGroups(vertices), flow, motion, front.motion, cl_uint(vertices), back.motion,
+               cl_int(startKnown), status);
+    }
     computeSpacing(flow);
     const bool withinBudget = refine(flow, motion);
-    if (settings.areaCorrection)
+    if (settings.areaCorrection) {
+        const PhaseClock::Scope timing(clock, Phase::Area);
         correctAreas();
+    }
     return withinBudget;
 }
 
@@ -373,9 +379,11 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
     }
     const Grid g = grid();
     if (settings.proximity) {
+        const PhaseClock::Scope timing(clock, Phase::Proximity);
         buildGrid(g);
         launch(queue, nearestOtherPart, laneGroups(g.buckets()), g, work, back.motion, contourLength, back.contour);
     }
+    const PhaseClock::Scope timing(clock, Phase::Spacing);
     launch(queue, rawSpacing, laneGroups(vertices), flow, front.motion, front.contour, contourOffset, contourCount, n,
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
            cl_float(settings.proximityLength()), g.cellSize, cl_int(settings.proximity), tileOffset, back.contour,
@@ -425,12 +433,16 @@ bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
         queue.enqueueFillBuffer(contourChanged, cl_uint(0), 0, contours * sizeof(cl_uint));
         queue.enqueueFillBuffer(contourCollapsing, cl_uint(0), 0, contours * sizeof(cl_uint));
         markActiveTiles();
-        const Pass split = splitPass(flow, motion);
+        const Pass split = [&] {
+            const PhaseClock::Scope timing(clock, Phase::Split);
+            return splitPass(flow, motion);
+        }();
         withinBudget = split.withinBudget;
         // After a split the short edges flagged before it are stale: every colour gets a look.
         const cl_uint colours = split.changed ? flagsShortEdge : split.flags & flagsShortEdge;
         bool collapsed = false;
         if (colours != 0) {
+            const PhaseClock::Scope timing(clock, Phase::Collapse);
             lookingAt = &contourCollapsing;
             markActiveTiles();
             collapsed = collapsePass(flow, motion, colours);
@@ -438,6 +450,7 @@ bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
         settled = !collapsed && !(split.flags & flagSplitCapped);
     }
     if (!settled && withinBudget) {
+        const PhaseClock::Scope timing(clock, Phase::Split);
         std::swap(contourActive, contourChanged);
         lookingAt = &contourActive;
         markActiveTiles();
@@ -827,6 +840,11 @@ std::optional<RegionsCopy> DeviceContours::takeRead(bool wait)
         }
         return std::nullopt;
     });
+}
+
+void DeviceContours::setPhaseClock(PhaseClock* clock)
+{
+    m->clock = clock;
 }
 
 std::size_t DeviceContours::bytesPerVertex()

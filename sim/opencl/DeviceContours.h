@@ -74,6 +74,9 @@ public:
     std::uint64_t requestRead(int regionCount);
     std::optional<RegionsCopy> takeRead(bool wait = false);
 
+    // Charges the phases of every later motion to `clock` (Simulation::enablePhaseTiming).
+    void setPhaseClock(PhaseClock* clock);
+
     // Bytes of device memory per vertex of capacity, all buffers that scale with vertices.
     static std::size_t bytesPerVertex();
 

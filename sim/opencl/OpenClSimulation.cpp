@@ -66,11 +66,20 @@ void OpenClSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration
         m_pendingStylus.push_back({from, to, radius, duration});
 }
 
+void OpenClSimulation::enablePhaseTiming()
+{
+    m_phases.enable([this] { m_device.queue().finish(); });
+    m_contours->setPhaseClock(&m_phases);
+}
+
 StepReport OpenClSimulation::step(double dt)
 {
     StepReport report;
-    report.substeps = substepCount(m_contours->strainInSpacings(binding(m_time, m_time), dt),
-                                   m_settings.tracking);
+    {
+        const PhaseClock::Scope timing(&m_phases, Phase::Advect);  // the strain samples the flow
+        report.substeps = substepCount(m_contours->strainInSpacings(binding(m_time, m_time), dt),
+                                       m_settings.tracking);
+    }
     const double h = dt / report.substeps;
     for (int k = 0; k < report.substeps && !report.vertexLimitReached; ++k) {
         if (m_fluid) {
@@ -78,6 +87,7 @@ StepReport OpenClSimulation::step(double dt)
                 const StylusSegment p = s.part(k, report.substeps);
                 m_fluid->addStylus(p.from, p.to, p.radius, p.duration);
             }
+            const PhaseClock::Scope timing(&m_phases, Phase::Fluid);
             m_fluid->step(h);
         }
         // The first substep starts where the strain check sampled: at m_time, the fluid's start field

@@ -36,6 +36,7 @@ public:
     std::optional<MacVelocity> velocity() const override;
     SimulationState snapshot() const override;
     void restore(const SimulationState& state) override;
+    void enablePhaseTiming() override;
 
 protected:
     void growTargetAreasAround(Vec2 p, double area) override { m_contours->growTargetAreasAround(p, area); }
