@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,17 @@ Vec2 rungeKutta4(const Flow& flow, Vec2 p, double t, double dt)
     const Vec2 k3 = flow.velocity(p + half * k2, t + half);
     const Vec2 k4 = flow.velocity(p + dt * k3, t + dt);
     return p + (dt / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+double recentredFraction(double s, double toA, double toB, double needA, double needB)
+{
+    const double length = toA + toB;
+    if (!(length > 0.0))
+        return s;
+    const double place = toA / length;
+    const double lo = needA / length, hi = 1.0 - needB / length;
+    const double wanted = lo <= hi ? std::clamp(0.5, lo, hi) : needA / (needA + needB);
+    return std::clamp(s + (wanted - place), 0.0, 1.0);
 }
 
 namespace {
@@ -85,7 +97,8 @@ public:
 
     // Moves v to the time-rewound midpoint of its neighbours (eq. 2), as if v had been removed and
     // the merged edge split again. Where the curve between them is lopsided, so that one half would
-    // come out short, bisection along the rewound edge finds a point far enough from both.
+    // come out short, one correction moves the rewound point along the edge by how far the moved one
+    // falls from the middle of what both ends allow (two motions at most, not a search).
     void recentre(int v, const MotionMap& map)
     {
         const int a = m_before[v], b = m_next[v];
@@ -94,14 +107,11 @@ public:
         const double needA = 0.25 * (m_spacing[a] + dv), needB = 0.25 * (m_spacing[b] + dv);
         auto at = [&](double s) { return m_previous[a] + s * (m_previous[b] - m_previous[a]); };
         auto place = [&](double s) { return m_rewind ? map(at(s)) : pa + s * (pb - pa); };
-        double lo = 0.0, hi = 1.0, s = 0.5;
+        double s = 0.5;
         Vec2 x = place(s);
-        for (int i = 0; i < 40; ++i) {
-            const double toA = glm::distance(x, pa), toB = glm::distance(x, pb);
-            if (toA >= needA && toB >= needB)
-                break;
-            (toA < toB ? lo : hi) = s;
-            s = 0.5 * (lo + hi);
+        const double toA = glm::distance(x, pa), toB = glm::distance(x, pb);
+        if (toA < needA || toB < needB) {
+            s = recentredFraction(s, toA, toB, needA, needB);
             x = place(s);
         }
         m_previous[v] = at(s);

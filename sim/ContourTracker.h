@@ -62,6 +62,12 @@ private:
     PhaseClock* m_clock = nullptr;
 };
 
+// Recentring (collapse): the rewound point at fraction s along an edge landed toA and toB from the
+// edge's moved ends, and must lie needA and needB from them. The fraction to try instead: s moved
+// by how far the landing point's place between the ends, toA / (toA + toB), is from the nearest
+// place that leaves both needs met (the middle when it can), in [0, 1].
+double recentredFraction(double s, double toA, double toB, double needA, double needB);
+
 // One classic fourth-order Runge–Kutta step through `flow` (eq. 1).
 Vec2 rungeKutta4(const Flow& flow, Vec2 p, double t, double dt);
 

@@ -358,23 +358,28 @@ VF_KERNEL void collapseDecide(__global const float4 *motion, __global const floa
 
 // Moves v to the time-rewound midpoint of its neighbours (eq. 2), as if v had been removed and
 // the merged edge split again. Where the curve between them is lopsided, so that one half would
-// come out short, bisection along the rewound edge finds a point far enough from both.
+// come out short, one correction moves the rewound point along the edge (recentredFraction, as
+// ContourTracker's): two motions at most.
+VF_INLINE float recentredFraction(float s, float toA, float toB, float needA, float needB)
+{
+    const float length = toA + toB;
+    if (!(length > 0.0f))
+        return s;
+    const float place = toA / length, lo = needA / length, hi = 1.0f - needB / length;
+    const float wanted = lo <= hi ? clamp(0.5f, lo, hi) : needA / (needA + needB);
+    return clamp(s + (wanted - place), 0.0f, 1.0f);
+}
+
 VF_INLINE float4 recentred(FLOW_PARAMS, MOTION_ARGS, float4 a, float4 b, float spacingA, float spacingB)
 {
     const float dv = fmin(spacingA, spacingB);
     const float needA = 0.25f * (spacingA + dv), needB = 0.25f * (spacingB + dv);
-    float lo = 0.0f, hi = 1.0f, s = 0.5f;
+    float s = 0.5f;
     float2 start = mix(a.zw, b.zw, s);
     float2 x = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : mix(a.xy, b.xy, s);
-    for (int k = 0; k < 40; ++k) {
-        const float toA = distance(x, a.xy), toB = distance(x, b.xy);
-        if (toA >= needA && toB >= needB)
-            break;
-        if (toA < toB)
-            lo = s;
-        else
-            hi = s;
-        s = 0.5f * (lo + hi);
+    const float toA = distance(x, a.xy), toB = distance(x, b.xy);
+    if (toA < needA || toB < needB) {
+        s = recentredFraction(s, toA, toB, needA, needB);
         start = mix(a.zw, b.zw, s);
         x = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : mix(a.xy, b.xy, s);
     }

@@ -76,6 +76,7 @@ class TestTracking : public QObject {
 
 private slots:
     void rungeKuttaIsFourthOrder();
+    void recentringCorrectsOnce();
 
     void edgesStayWithinSpacing_data();
     void edgesStayWithinSpacing();
@@ -112,6 +113,18 @@ void TestTracking::rungeKuttaIsFourthOrder()
         const double order = std::log2(errors[i - 1] / errors[i]);
         QVERIFY2(order > 3.8 && order < 4.2, qPrintable(QStringLiteral("observed order %1").arg(order)));
     }
+}
+
+// Recentring's one correction: a rewound midpoint that landed too near one end moves toward the
+// other by how far it landed from the middle of what both ends allow.
+void TestTracking::recentringCorrectsOnce()
+{
+    QCOMPARE(sim::recentredFraction(0.5, 0.1, 0.9, 0.3, 0.3), 0.9);     // landed at 0.1 of the way, aim 0.5
+    QCOMPARE(sim::recentredFraction(0.5, 0.5, 0.5, 0.2, 0.2), 0.5);     // already in the middle
+    QCOMPARE(sim::recentredFraction(0.7, 0.9, 0.1, 0.05, 0.7), 0.1);    // aim 0.3: the middle is too near b
+    QCOMPARE(sim::recentredFraction(0.5, 0.2, 0.8, 0.75, 0.75), 0.8);   // needs longer than the edge: in proportion
+    QCOMPARE(sim::recentredFraction(0.9, 0.0, 1.0, 0.3, 0.3), 1.0);     // never past the edge's end
+    QCOMPARE(sim::recentredFraction(0.4, 0.0, 0.0, 0.3, 0.3), 0.4);     // nothing to go by
 }
 
 void TestTracking::edgesStayWithinSpacing_data()
