@@ -372,7 +372,7 @@ void breakdownBenchmark(benchmark::State& state, std::int64_t target)
             }
         });
         timed(Spacing, [&] { computeSpacing(copy, flow, t + kDt, settings.tracking, grid); });
-        timed(GridBuild, [&] { grid.build(copy, settings.tracking.proximityRadius()); });
+        timed(GridBuild, [&] { grid.build(copy, settings.tracking.proximityRadius(), settings.tracking.proximityCell()); });
         timed(Proximity, [&] {
             double nearest = 0.0;
             for (std::size_t ci = 0; ci < copy.size(); ++ci)

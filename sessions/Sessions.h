@@ -19,9 +19,9 @@ struct MarblingOptions {
     double dropRadius = 0.07;
     int combPasses = 4;          // along x, alternating direction
     int crossPasses = 2;         // along y, after them
-    int tines = 8;
+    int tines = 10;
     double tineRadius = 0.012;
-    double passSeconds = 0.6;    // to cross the tray once
+    double passSeconds = 0.5;    // to cross the tray once
     double maxSpacing = 0.002;
     double dt = 0.005;
     std::int64_t steps = 900;

@@ -12,14 +12,15 @@ namespace {
 constexpr int maxCellsPerAxis = 4096;  // a wider spread only makes cells larger, never wrong
 }
 
+
 int ProximityGrid::cellOf(Vec2 p, int& column, int& row) const
 {
-    column = std::clamp(int((p.x - m_origin.x) / m_radius), 0, m_columns - 1);
-    row = std::clamp(int((p.y - m_origin.y) / m_radius), 0, m_rows - 1);
+    column = std::clamp(int((p.x - m_origin.x) / m_cell), 0, m_columns - 1);
+    row = std::clamp(int((p.y - m_origin.y) / m_cell), 0, m_rows - 1);
     return row * m_columns + column;
 }
 
-void ProximityGrid::build(const std::vector<Contour>& contours, double radius)
+void ProximityGrid::build(const std::vector<Contour>& contours, double radius, double cell)
 {
     Vec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     std::size_t total = 0;
@@ -33,10 +34,11 @@ void ProximityGrid::build(const std::vector<Contour>& contours, double radius)
     if (total == 0)
         lo = hi = Vec2(0.0);
     const Vec2 extent = hi - lo;
-    m_radius = std::max({radius, extent.x / maxCellsPerAxis, extent.y / maxCellsPerAxis, 1e-300});
+    m_radius = radius;
+    m_cell = std::max({cell, extent.x / maxCellsPerAxis, extent.y / maxCellsPerAxis, 1e-300});
     m_origin = lo;
-    m_columns = int(extent.x / m_radius) + 1;
-    m_rows = int(extent.y / m_radius) + 1;
+    m_columns = int(extent.x / m_cell) + 1;
+    m_rows = int(extent.y / m_cell) + 1;
 
     // Counting sort: count per cell, exclusive prefix sum, scatter.
     m_cellOfVertex.resize(total);
@@ -74,11 +76,14 @@ double ProximityGrid::nearestOtherPart(std::size_t contour, std::size_t index) c
     const double length = m_contourLength[contour];
     double best2 = m_radius * m_radius;
     bool found = false;
-    int column = 0, row = 0;
-    cellOf(self.position, column, row);
-    const int firstColumn = std::max(0, column - 1), lastColumn = std::min(m_columns - 1, column + 1);
-    for (int r = std::max(0, row - 1); r <= std::min(m_rows - 1, row + 1); ++r) {
-        // The three cells of a row are neighbours in the sorted entries: one span.
+    // The entries of cells [firstColumn, lastColumn] of row r, one span of the sorted entries.
+    const auto searchSpan = [&](int r, int firstColumn, int lastColumn) {
+        if (r < 0 || r >= m_rows)
+            return;
+        firstColumn = std::max(0, firstColumn);
+        lastColumn = std::min(m_columns - 1, lastColumn);
+        if (firstColumn > lastColumn)
+            return;
         const std::size_t rowStart = std::size_t(r) * m_columns;
         for (std::uint32_t e = m_cellStart[rowStart + firstColumn]; e < m_cellStart[rowStart + lastColumn + 1]; ++e) {
             const Entry& other = m_entries[e];
@@ -94,6 +99,24 @@ double ProximityGrid::nearestOtherPart(std::size_t contour, std::size_t index) c
             }
             best2 = dist2;
             found = true;
+        }
+    };
+    int column = 0, row = 0;
+    cellOf(self.position, column, row);
+    // Ring k: the cells k away (Chebyshev). Once rings 0…k are searched, every vertex nearer than
+    // k cells plus the vertex's distance to the edge of its own cell has been seen, so the search
+    // stops as soon as the nearest found is that near. Dense ink finds it in its own cell, where
+    // cells as wide as the radius would hold hundreds of candidates.
+    const Vec2 inCell = self.position - m_origin - Vec2(column, row) * m_cell;
+    const double edge = std::max(0.0, std::min({inCell.x, inCell.y, m_cell - inCell.x, m_cell - inCell.y}));
+    const int rings = int(std::ceil(m_radius / m_cell));
+    searchSpan(row, column, column);
+    for (int k = 1; k <= rings && best2 > (edge + (k - 1) * m_cell) * (edge + (k - 1) * m_cell); ++k) {
+        searchSpan(row - k, column - k, column + k);
+        searchSpan(row + k, column - k, column + k);
+        for (int r = row - k + 1; r <= row + k - 1; ++r) {
+            searchSpan(r, column - k, column - k);
+            searchSpan(r, column + k, column + k);
         }
     }
     return found ? std::sqrt(best2) : std::numeric_limits<double>::infinity();

@@ -11,8 +11,9 @@ namespace vf::sim {
 
 class ProximityGrid {
 public:
-    // Indexes every vertex of `contours`; `radius` is the search radius and the cell size.
-    void build(const std::vector<Contour>& contours, double radius);
+    // Indexes every vertex of `contours` in cells of `cell` (or larger, for a spread beyond 4096
+    // cells); `radius` is the search radius.
+    void build(const std::vector<Contour>& contours, double radius, double cell);
 
     // Distance from vertex `index` of contour `contour` to the nearest vertex of another part of
     // any contour, or +infinity when none lies within the radius. A vertex of the same contour is
@@ -28,7 +29,8 @@ private:
     };
     int cellOf(Vec2 p, int& column, int& row) const;
 
-    double m_radius = 0.0;
+    double m_radius = 0.0;  // the search radius
+    double m_cell = 0.0;    // the cell size
     Vec2 m_origin{0.0};
     int m_columns = 0, m_rows = 0;
     std::vector<std::uint32_t> m_cellStart;         // m_columns * m_rows + 1 offsets into m_entries

@@ -66,7 +66,7 @@ void computeSpacing(std::vector<Contour>& contours, const Flow& flow, double t,
     if (settings.proximity) {
         // Each vertex's distance to another part, kept in its spacing until the factor replaces it.
         const PhaseClock::Scope timing(clock, Phase::Proximity);
-        grid.build(contours, settings.proximityRadius());
+        grid.build(contours, settings.proximityRadius(), settings.proximityCell());
         for (std::size_t ci = 0; ci < contours.size(); ++ci)
             for (std::size_t i = 0; i < contours[ci].spacing.size(); ++i)
                 contours[ci].spacing[i] = grid.nearestOtherPart(ci, i);

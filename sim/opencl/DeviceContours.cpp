@@ -187,7 +187,7 @@ struct DeviceContours::Impl {
     const std::size_t accSize;
     const std::optional<std::size_t> vertexCap;  // VF_OPENCL_MAX_VERTICES
     Scan countScan, sumScan;
-    cl::Kernel advect, strain, positionsOf, arcTilesAndCount, gridScatter, nearestOtherPart, rawSpacing, smoothSpacing,
+    cl::Kernel advect, strain, positionsOf, arcTilesAndCount, gridScatter, nearestOtherPart, nearestBeyond, rawSpacing, smoothSpacing,
         splitCount, splitScatter, recountContours, collapseDecide, collapseScatter, recentreInPlace,
         markActiveTilesKernel, contourTermTiles, contourTermSums, correctArea;
 
@@ -248,6 +248,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
                                 {&arcTilesAndCount, "arcTilesAndCount"},
                                 {&gridScatter, "gridScatter"},
                                 {&nearestOtherPart, "nearestOtherPart"},
+                                {&nearestBeyond, "nearestBeyond"},
                                 {&rawSpacing, "rawSpacing"},
                                 {&smoothSpacing, "smoothSpacing"},
                                 {&splitCount, "splitCount"},
@@ -342,7 +343,7 @@ Grid DeviceContours::Impl::grid() const
     const std::size_t buckets =
         std::min(std::bit_ceil(std::max(vertices, minCapacity)), std::bit_floor(paddedCapacity - 1));
     const auto bits = cl_uint(std::countr_zero(buckets));
-    return {cl_float(settings.proximityRadius()), (bits + 1) / 2, bits / 2};
+    return {cl_float(settings.proximityCell()), (bits + 1) / 2, bits / 2};
 }
 
 bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, bool startKnown)
@@ -378,15 +379,18 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
         return;
     }
     const Grid g = grid();
+    const auto radius = cl_float(settings.proximityRadius());
     if (settings.proximity) {
         const PhaseClock::Scope timing(clock, Phase::Proximity);
         buildGrid(g);
-        launch(queue, nearestOtherPart, laneGroups(g.buckets()), g, work, back.motion, contourLength, back.contour);
+        launch(queue, nearestOtherPart, laneGroups(g.buckets()), g, radius, work, back.motion, contourLength,
+               back.contour);
+        launch(queue, nearestBeyond, vertices, g, radius, work, back.motion, n, contourLength, back.contour);
     }
     const PhaseClock::Scope timing(clock, Phase::Spacing);
     launch(queue, rawSpacing, laneGroups(vertices), flow, front.motion, front.contour, contourOffset, contourCount, n,
            cl_float(settings.maxSpacing), cl_float(settings.curvatureLength()), cl_float(settings.vorticityScale),
-           cl_float(settings.proximityLength()), g.cellSize, cl_int(settings.proximity), tileOffset, back.contour,
+           cl_float(settings.proximityLength()), radius, cl_int(settings.proximity), tileOffset, back.contour,
            back.spacing);
     launch(queue, smoothSpacing, laneGroups(vertices), back.spacing, front.contour, contourOffset, contourCount, n,
            weights, cl_int(smoothingRadius), cl_float(settings.minSpacing()), cl_float(settings.maxSpacing),
@@ -407,7 +411,8 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
     // Each entry's squared distance to another part starts at the search radius squared (nothing
     // found) for nearestOtherPart's atomic_min: one fill, where gridScatter would write it to
     // scattered slots.
-    queue.enqueueFillBuffer(back.contour, cl_float(g.cellSize * g.cellSize), 0, vertices * sizeof(cl_float));
+    const auto radius = cl_float(settings.proximityRadius());
+    queue.enqueueFillBuffer(back.contour, radius * radius, 0, vertices * sizeof(cl_float));
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,

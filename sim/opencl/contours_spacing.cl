@@ -3,8 +3,10 @@
 //   contour with a Gaussian window (eq. 6), + ε, clamped to d_max.
 //
 // dist_i (eq. 7) is the distance to the nearest vertex of another part of any contour, found in a
-// uniform grid built by counting sort ([Grand 2007], paper §3.4). Cells are as wide as the search
-// radius. The buckets, a power of two that follows the vertex count, form a torus that the plane
+// uniform grid built by counting sort ([Grand 2007], paper §3.4). Cells are a quarter of the
+// search radius, and the search goes ring by ring (nearestOtherPart, then nearestBeyond): dense
+// ink finds its nearest other part in the first ring, where cells as wide as the radius held
+// hundreds of candidates. The buckets, a power of two that follows the vertex count, form a torus that the plane
 // wraps onto, so the grid needs no bounding box (no read-back) and stays small however far
 // contours spread, and neighbouring cells stay neighbours in memory (a CPU device lives on its
 // caches). At a million vertices and the default d_max the torus spans 8 canvas units; cells a
@@ -202,9 +204,10 @@ VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, uin
         atomic_min(&gap2[a + 1], as_uint(nearestB));
 }
 
-// ProximityGrid::nearestOtherPart for every grid entry: the squared distance to the nearest vertex
-// of another part within the search radius (the cell size), or the radius squared when there is
-// none, as float bits in gap2 (filled before). Distance is symmetric and so is "another part"
+// ProximityGrid::nearestOtherPart's first ring for every grid entry: the squared distance to the
+// nearest vertex of another part in the 3×3 cells around it, when within the search radius, or
+// the radius squared, as float bits in gap2 (filled before). Where that is more than a cell, the
+// rings beyond may hold a nearer one (nearestBeyond). Distance is symmetric and so is "another part"
 // (same contour, same arcs, same length), so every pair of entries is compared once, by the one
 // that comes first: the entry takes the rest of its own bucket and the next bucket of its row,
 // then the three buckets of the next row (the forward half of the 3×3 cells), and both ends of a
@@ -213,8 +216,8 @@ VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, uin
 // needs no cell arithmetic, and most buckets are empty. A bucket's entries go two at a time
 // (nearestOfPair). Work-items run in bucket order, so neighbouring ones search the same cells,
 // which a CPU device then finds in its caches.
-VF_KERNEL void nearestOtherPart(GRID_ARGS, __global const uint *bucketStart, __global const uint4 *entries,
-                                __global const float *contourLength, __global uint *gap2)
+VF_KERNEL void nearestOtherPart(GRID_ARGS, float radius, __global const uint *bucketStart,
+                                __global const uint4 *entries, __global const float *contourLength, __global uint *gap2)
 {
     // The bucket count, a power of two of at least 32 (DeviceContours::Impl::grid()), is a
     // multiple of VF_LANES.
@@ -222,7 +225,7 @@ VF_KERNEL void nearestOtherPart(GRID_ARGS, __global const uint *bucketStart, __g
     if (first >= (1u << (columnBits + rowBits)))
         return;
     const uint lastColumn = (1u << columnBits) - 1u, lastRow = (1u << rowBits) - 1u;
-    const float radius2 = cellSize * cellSize;
+    const float radius2 = radius * radius;
     for (uint bucket = first; bucket < first + VF_LANES; ++bucket) {
         const uint from = bucketStart[bucket], to = bucketStart[bucket + 1];
         if (from == to)
@@ -244,6 +247,67 @@ VF_KERNEL void nearestOtherPart(GRID_ARGS, __global const uint *bucketStart, __g
         for (uint a = from; a < to; a += 2)
             nearestOfPair(entries, a, to, rowEnd, runs, contourLength, radius2, gap2);
     }
+}
+
+// The nearest other part of entry `self` among entries [from, to) closer than best2 (squared).
+VF_INLINE float nearestIn(__global const uint4 *entries, uint from, uint to, uint4 self, float length, float best2)
+{
+    const float x = as_float(self.x), y = as_float(self.y), arc = as_float(self.z);
+    for (uint e = from; e < to; ++e) {
+        const uint4 q = entries[e];
+        const float dx = as_float(q.x) - x, dy = as_float(q.y) - y, dist2 = dx * dx + dy * dy;
+        const float along = fabs(as_float(q.z) - arc), way = fmin(along, length - along);
+        if (dist2 < best2 && !(q.w == self.w && way * way <= 4.0f * dist2))
+            best2 = dist2;
+    }
+    return best2;
+}
+
+// The cells [column, column + count) of a torus row, as the entries of one or (where the row wraps)
+// two runs of buckets, searched for entry `self`.
+VF_INLINE float nearestInCells(__global const uint *bucketStart, __global const uint4 *entries, uint rowBase,
+                               int column, int count, uint lastColumn, uint4 self, float length, float best2)
+{
+    const uint from = (uint)column & lastColumn, to = (uint)(column + count - 1) & lastColumn;
+    if (from <= to)
+        return nearestIn(entries, bucketStart[rowBase + from], bucketStart[rowBase + to + 1], self, length, best2);
+    best2 = nearestIn(entries, bucketStart[rowBase + from], bucketStart[rowBase + lastColumn + 1], self, length, best2);
+    return nearestIn(entries, bucketStart[rowBase], bucketStart[rowBase + to + 1], self, length, best2);
+}
+
+// The rings of cells beyond the first for every entry whose nearest other part, if any, lies more
+// than a cell away: ring k holds the cells k away (Chebyshev), and once rings 1…k are searched
+// every vertex nearer than k cells has been seen, so the search stops there when the nearest found
+// is that near, and at the search radius at the latest. One work-item per entry; only its own
+// minimum changes.
+VF_KERNEL void nearestBeyond(GRID_ARGS, float radius, __global const uint *bucketStart, __global const uint4 *entries,
+                             uint n, __global const float *contourLength, __global uint *gap2)
+{
+    const uint e = get_global_id(0);
+    if (e >= n)
+        return;
+    const float cell2 = cellSize * cellSize;
+    float best2 = as_float(gap2[e]);
+    if (best2 <= cell2)
+        return;
+    const uint4 self = entries[e];
+    const float length = contourLength[self.w];
+    const int column = (int)clamp(floor(as_float(self.x) / cellSize), -1e9f, 1e9f);
+    const int row = (int)clamp(floor(as_float(self.y) / cellSize), -1e9f, 1e9f);
+    const uint lastColumn = (1u << columnBits) - 1u, lastRow = (1u << rowBits) - 1u;
+    const int rings = (int)ceil(radius / cellSize);
+    for (int k = 2; k <= rings && best2 > (float)((k - 1) * (k - 1)) * cell2; ++k) {
+        for (int dy = -k; dy <= k; ++dy) {
+            const uint rowBase = ((uint)(row + dy) & lastRow) << columnBits;
+            if (dy == -k || dy == k) {
+                best2 = nearestInCells(bucketStart, entries, rowBase, column - k, 2 * k + 1, lastColumn, self, length, best2);
+            } else {
+                best2 = nearestInCells(bucketStart, entries, rowBase, column - k, 1, lastColumn, self, length, best2);
+                best2 = nearestInCells(bucketStart, entries, rowBase, column + k, 1, lastColumn, self, length, best2);
+            }
+        }
+    }
+    gap2[e] = as_uint(best2);
 }
 
 // Menger curvature: 1 / radius of the circle through the three points (SpacingField), in lanes.
