@@ -97,9 +97,12 @@ public:
 
     // Moves v to the time-rewound midpoint of its neighbours (eq. 2), as if v had been removed and
     // the merged edge split again. Where the curve between them is lopsided, so that one half would
-    // come out short, one correction moves the rewound point along the edge by how far the moved one
-    // falls from the middle of what both ends allow (two motions at most, not a search).
-    void recentre(int v, const MotionMap& map)
+    // come out short, a few corrections move the rewound point along the edge by how far the moved
+    // one falls from the middle of what both ends allow (recentredFraction; at most
+    // recentreCorrections + 1 motions, not a search). Only where that leaves both of v's edges at
+    // least half their spacing does v move (true); else the short edge stays, rather than v being
+    // moved to the same place round after round.
+    bool recentre(int v, const MotionMap& map)
     {
         const int a = m_before[v], b = m_next[v];
         const Vec2 pa = m_position[a], pb = m_position[b];
@@ -109,14 +112,19 @@ public:
         auto place = [&](double s) { return m_rewind ? map(at(s)) : pa + s * (pb - pa); };
         double s = 0.5;
         Vec2 x = place(s);
-        const double toA = glm::distance(x, pa), toB = glm::distance(x, pb);
-        if (toA < needA || toB < needB) {
+        for (int k = 0;; ++k) {
+            const double toA = glm::distance(x, pa), toB = glm::distance(x, pb);
+            if (toA >= needA && toB >= needB)
+                break;
+            if (k == recentreCorrections)
+                return false;
             s = recentredFraction(s, toA, toB, needA, needB);
             x = place(s);
         }
         m_previous[v] = at(s);
         m_position[v] = x;
         m_spacing[v] = dv;
+        return true;
     }
 
     void writeTo(Contour& c, int start) const
@@ -175,8 +183,9 @@ int collapsePass(Ring& ring, int start, const MotionMap& map, bool& changed)
             ring.unlink(victim);
             if (victim == start)
                 start = b;
-        } else {
-            ring.recentre(victim, map);
+        } else if (!ring.recentre(victim, map)) {
+            v = w;
+            continue;
         }
         changed = true;
         v = b;

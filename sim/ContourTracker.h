@@ -67,6 +67,7 @@ private:
 // by how far the landing point's place between the ends, toA / (toA + toB), is from the nearest
 // place that leaves both needs met (the middle when it can), in [0, 1].
 double recentredFraction(double s, double toA, double toB, double needA, double needB);
+inline constexpr int recentreCorrections = 3;  // at most (the device's kernels are built with it)
 
 // One classic fourth-order Runge–Kutta step through `flow` (eq. 1).
 Vec2 rungeKutta4(const Flow& flow, Vec2 p, double t, double dt);

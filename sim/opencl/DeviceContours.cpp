@@ -1,5 +1,6 @@
 #include "sim/opencl/DeviceContours.h"
 
+#include "sim/ContourTracker.h"
 #include "sim/SpacingField.h"
 
 #include "sim/opencl/KernelSources.h"
@@ -237,7 +238,8 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
 {
     const std::string acc = fp64 ? "double" : "float";
     const std::string options =
-        commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc + "2 -DVF_ACC4=" + acc + "4";
+        commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc + "2 -DVF_ACC4=" + acc + "4" +
+        " -DVF_RECENTRE_CORRECTIONS=" + std::to_string(recentreCorrections);
     const std::string source = joinedKernelSources({"flow.h.cl"}) + flowSource + "\n" +
                                joinedKernelSources({"workgroup.cl", "contours.cl", "contours_spacing.cl",
                                                     "contours_refine.cl", "contours_area.cl"});
@@ -445,6 +447,7 @@ bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
         withinBudget = split.withinBudget;
         // After a split the short edges flagged before it are stale: every colour gets a look.
         const cl_uint colours = split.changed ? flagsShortEdge : split.flags & flagsShortEdge;
+        if (getenv("VF_COUNT")) fprintf(stderr, " round %d: split %zu -> %zu colours %u\n", round, vertices, split.total, colours);
         bool collapsed = false;
         if (colours != 0) {
             const PhaseClock::Scope timing(clock, Phase::Collapse);
@@ -544,11 +547,12 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
         if (!(colours & (1u << colour)))
             continue;
         clearPassFlags();
-        launch(queue, collapseDecide, laneGroups(vertices + 1), front.motion, front.spacing, front.contour,
+        launch(queue, collapseDecide, laneGroups(vertices + 1), flow, motion, front.motion, front.spacing, front.contour,
                contourOffset, contourCount, cl_uint(vertices), colour, tileActive, contourChanged, work, tileOffset,
                tileTotals, cl_uint(tiles()), status);
         countScan.exclusive(tileTotals, tiles() + 1);
         const Pass pass = readPass();
+        if (getenv("VF_COUNT")) fprintf(stderr, "  colour %u: deleted %zu recentred %d next colours %u\n", colour, vertices - pass.total, int((pass.flags & flagRecentred) != 0), pass.flags & flagsShortEdge);
         if (pass.changed) {
             launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing,
                    front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, work, tileOffset,

@@ -287,14 +287,49 @@ VF_KERNEL void recountContours(__global uint *contourOffset, __global uint *cont
 #define ACTION_DELETE 1u
 #define ACTION_RECENTRE 2u
 
+// Moves v to the time-rewound midpoint of its neighbours (eq. 2), as if v had been removed and
+// the merged edge split again. Where the curve between them is lopsided, so that one half would
+// come out short, a few corrections move the rewound point along the edge (recentredFraction, as
+// ContourTracker's).
+VF_INLINE float recentredFraction(float s, float toA, float toB, float needA, float needB)
+{
+    const float length = toA + toB;
+    if (!(length > 0.0f))
+        return s;
+    const float place = toA / length, lo = needA / length, hi = 1.0f - needB / length;
+    const float wanted = lo <= hi ? clamp(0.5f, lo, hi) : needA / (needA + needB);
+    return clamp(s + (wanted - place), 0.0f, 1.0f);
+}
+
+// *settles: both of v's new edges are at least half their spacing, after at most
+// VF_RECENTRE_CORRECTIONS corrections (ContourTracker's recentreCorrections).
+VF_INLINE float4 recentred(FLOW_PARAMS, MOTION_ARGS, float4 a, float4 b, float spacingA, float spacingB, bool *settles)
+{
+    const float dv = fmin(spacingA, spacingB);
+    const float needA = 0.25f * (spacingA + dv), needB = 0.25f * (spacingB + dv);
+    float s = 0.5f;
+    float2 start = mix(a.zw, b.zw, s);
+    float2 x = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : mix(a.xy, b.xy, s);
+    for (int k = 0;; ++k) {
+        const float toA = distance(x, a.xy), toB = distance(x, b.xy);
+        *settles = toA >= needA && toB >= needB;
+        if (*settles || k == VF_RECENTRE_CORRECTIONS)
+            break;
+        s = recentredFraction(s, toA, toB, needA, needB);
+        start = mix(a.zw, b.zw, s);
+        x = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : mix(a.xy, b.xy, s);
+    }
+    return (float4)(x, start);
+}
+
 VF_INLINE float turning(float2 before, float2 at, float2 after)
 {
     const float2 e0 = at - before, e1 = after - at;
     return fabs(atan2(cross2(e0, e1), dot(e0, e1)));
 }
 
-VF_INLINE uint collapseAction(__global const float4 *motion, __global const float *spacing, uint v, uint first,
-                              uint count)
+VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, __global const float4 *motion, __global const float *spacing,
+                              uint v, uint first, uint count)
 {
     const uint a = previousIn(v, first, count), b = nextIn(v, first, count);
     const float2 pa = motion[a].xy, pv = motion[v].xy, pb = motion[b].xy;
@@ -310,10 +345,17 @@ VF_INLINE uint collapseAction(__global const float4 *motion, __global const floa
         (shortAfter && here < turning(pv, pb, motion[nextIn(b, first, count)].xy));
     if (!victim)
         return ACTION_KEEP;
-    return distance(pa, pb) <= 0.5f * (da + db) ? ACTION_DELETE : ACTION_RECENTRE;
+    if (distance(pa, pb) <= 0.5f * (da + db))
+        return ACTION_DELETE;
+    // Recentred only where that lengthens both edges enough; else the short edge stays (a lower bound
+    // topology does not need) rather than v being moved to the same place round after round.
+    bool settles;
+    recentred(FLOW_PASS, MOTION_PASS, motion[a], motion[b], da, db, &settles);
+    return settles ? ACTION_RECENTRE : ACTION_KEEP;
 }
 
-VF_KERNEL void collapseDecide(__global const float4 *motion, __global const float *spacing, CONTOUR_ARGS, uint n,
+VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *motion, __global const float *spacing,
+                              CONTOUR_ARGS, uint n,
                               uint colour, TILE_ARGS, __global uint *contourChanged, __global uint *action,
                               __global uint *tileOffset, __global uint *tileTotals, uint tiles,
                               __global uint *status)
@@ -336,9 +378,9 @@ VF_KERNEL void collapseDecide(__global const float4 *motion, __global const floa
         uint act = ACTION_KEEP;
         const uint c = contourOf[i], from = contourOffset[c], count = contourCount[c], k = i - from;
         if (count > 3 && collapseColour(k, count) == colour) {
-            act = collapseAction(motion, spacing, i, from, count);
+            act = collapseAction(FLOW_PASS, MOTION_PASS, motion, spacing, i, from, count);
             if (count == 4 && k >= 2 && act == ACTION_DELETE &&
-                collapseAction(motion, spacing, i - 2, from, count) == ACTION_DELETE)
+                collapseAction(FLOW_PASS, MOTION_PASS, motion, spacing, i - 2, from, count) == ACTION_DELETE)
                 act = ACTION_KEEP;
         }
         const uint j = nextIn(i, from, count);
@@ -356,42 +398,13 @@ VF_KERNEL void collapseDecide(__global const float4 *motion, __global const floa
         atomic_or(&status[STATUS_PASS], groupFlags);
 }
 
-// Moves v to the time-rewound midpoint of its neighbours (eq. 2), as if v had been removed and
-// the merged edge split again. Where the curve between them is lopsided, so that one half would
-// come out short, one correction moves the rewound point along the edge (recentredFraction, as
-// ContourTracker's): two motions at most.
-VF_INLINE float recentredFraction(float s, float toA, float toB, float needA, float needB)
-{
-    const float length = toA + toB;
-    if (!(length > 0.0f))
-        return s;
-    const float place = toA / length, lo = needA / length, hi = 1.0f - needB / length;
-    const float wanted = lo <= hi ? clamp(0.5f, lo, hi) : needA / (needA + needB);
-    return clamp(s + (wanted - place), 0.0f, 1.0f);
-}
-
-VF_INLINE float4 recentred(FLOW_PARAMS, MOTION_ARGS, float4 a, float4 b, float spacingA, float spacingB)
-{
-    const float dv = fmin(spacingA, spacingB);
-    const float needA = 0.25f * (spacingA + dv), needB = 0.25f * (spacingB + dv);
-    float s = 0.5f;
-    float2 start = mix(a.zw, b.zw, s);
-    float2 x = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : mix(a.xy, b.xy, s);
-    const float toA = distance(x, a.xy), toB = distance(x, b.xy);
-    if (toA < needA || toB < needB) {
-        s = recentredFraction(s, toA, toB, needA, needB);
-        start = mix(a.zw, b.zw, s);
-        x = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : mix(a.xy, b.xy, s);
-    }
-    return (float4)(x, start);
-}
-
 VF_INLINE void writeRecentred(FLOW_PARAMS, MOTION_ARGS, __global const float4 *inMotion,
                               __global const float *inSpacing, uint v, uint first, uint count,
                               __global float4 *outMotion, __global float *outSpacing, uint at)
 {
     const uint a = previousIn(v, first, count), b = nextIn(v, first, count);
-    outMotion[at] = recentred(FLOW_PASS, MOTION_PASS, inMotion[a], inMotion[b], inSpacing[a], inSpacing[b]);
+    bool settles;
+    outMotion[at] = recentred(FLOW_PASS, MOTION_PASS, inMotion[a], inMotion[b], inSpacing[a], inSpacing[b], &settles);
     outSpacing[at] = fmin(inSpacing[a], inSpacing[b]);
 }
 
