@@ -385,8 +385,8 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
     if (settings.proximity) {
         const PhaseClock::Scope timing(clock, Phase::Proximity);
         buildGrid(g);
-        launch(queue, nearestOtherPart, laneGroups(g.buckets()), g, radius, work, back.motion, contourLength,
-               back.contour);
+        launch(queue, nearestOtherPart, laneGroups(g.buckets()), radius, work, back.motion, cl_uint(g.buckets()),
+               contourLength, back.contour);
         launch(queue, nearestBeyond, vertices, g, radius, work, back.motion, n, contourLength, back.contour);
     }
     const PhaseClock::Scope timing(clock, Phase::Spacing);

@@ -176,10 +176,9 @@ VF_INLINE float smallestOf(float4 best2)
 }
 
 // The search of the entries at a and, when it is before `to` (the end of their bucket), a + 1: the
-// rest of their bucket row up to rowEnd, then the runs [x, y) of `runs` (an empty run is (0, 0)).
-// Each entry's own minimum goes to gap2 once, at the end.
-VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, uint rowEnd, uint2 runs[3],
-                             __global const float *contourLength, float radius2, __global uint *gap2)
+// rest of their bucket. Each entry's own minimum goes to gap2 once, at the end.
+VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, __global const float *contourLength,
+                             float radius2, __global uint *gap2)
 {
     const bool withB = a + 1 < to;
     const uint4 entryA = entries[a], entryB = entries[withB ? a + 1 : a];
@@ -189,14 +188,9 @@ VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, uin
     pair.arc = (float8)((float4)(as_float(entryA.z)), (float4)(as_float(entryB.z)));
     pair.length = (float8)((float4)(contourLength[entryA.w]), (float4)(contourLength[entryB.w]));
     pair.contour = (uint8)((uint4)(entryA.w), (uint4)(entryB.w));
-    // In the entries' own row each takes the entries after it; elsewhere all. B's lanes take none
-    // when it is missing.
-    const uint noneForB = withB ? 0u : ~0u;
-    const uint8 afterSelf = (uint8)((uint4)(a + 1), (uint4)(withB ? a + 2 : noneForB));
-    const uint8 anywhere = (uint8)((uint4)(0u), (uint4)(noneForB));
-    float8 best2 = nearestInRun(entries, a + 1, rowEnd, afterSelf, &pair, radius2, (float8)(radius2), gap2);
-    for (int r = 0; r < 3; ++r)
-        best2 = nearestInRun(entries, runs[r].x, runs[r].y, anywhere, &pair, radius2, best2, gap2);
+    // Each takes the entries after it; B's lanes take none when it is missing.
+    const uint8 afterSelf = (uint8)((uint4)(a + 1), (uint4)(withB ? a + 2 : ~0u));
+    const float8 best2 = nearestInRun(entries, a + 1, to, afterSelf, &pair, radius2, (float8)(radius2), gap2);
     const float nearestA = smallestOf(best2.lo), nearestB = smallestOf(best2.hi);
     if (nearestA < radius2)
         atomic_min(&gap2[a], as_uint(nearestA));
@@ -204,10 +198,10 @@ VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, uin
         atomic_min(&gap2[a + 1], as_uint(nearestB));
 }
 
-// ProximityGrid::nearestOtherPart's first ring for every grid entry: the squared distance to the
-// nearest vertex of another part in the 3×3 cells around it, when within the search radius, or
-// the radius squared, as float bits in gap2 (filled before). Where that is more than a cell, the
-// rings beyond may hold a nearer one (nearestBeyond). Distance is symmetric and so is "another part"
+// ProximityGrid::nearestOtherPart's first look for every grid entry: the squared distance to the
+// nearest vertex of another part in its own bucket, when within the search radius, or the radius
+// squared, as float bits in gap2 (filled before). Where that is farther than the edge of the
+// entry's cell, the rings around it may hold a nearer one (nearestBeyond). Distance is symmetric and so is "another part"
 // (same contour, same arcs, same length), so every pair of entries is compared once, by the one
 // that comes first: the entry takes the rest of its own bucket and the next bucket of its row,
 // then the three buckets of the next row (the forward half of the 3×3 cells), and both ends of a
@@ -216,36 +210,19 @@ VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, uin
 // needs no cell arithmetic, and most buckets are empty. A bucket's entries go two at a time
 // (nearestOfPair). Work-items run in bucket order, so neighbouring ones search the same cells,
 // which a CPU device then finds in its caches.
-VF_KERNEL void nearestOtherPart(GRID_ARGS, float radius, __global const uint *bucketStart,
-                                __global const uint4 *entries, __global const float *contourLength, __global uint *gap2)
+VF_KERNEL void nearestOtherPart(float radius, __global const uint *bucketStart, __global const uint4 *entries,
+                                uint buckets, __global const float *contourLength, __global uint *gap2)
 {
     // The bucket count, a power of two of at least 32 (DeviceContours::Impl::grid()), is a
     // multiple of VF_LANES.
     const uint first = VF_LANES * get_global_id(0);
-    if (first >= (1u << (columnBits + rowBits)))
+    if (first >= buckets)
         return;
-    const uint lastColumn = (1u << columnBits) - 1u, lastRow = (1u << rowBits) - 1u;
     const float radius2 = radius * radius;
     for (uint bucket = first; bucket < first + VF_LANES; ++bucket) {
         const uint from = bucketStart[bucket], to = bucketStart[bucket + 1];
-        if (from == to)
-            continue;
-        const uint column = bucket & lastColumn, row = bucket - column;
-        // This row: the rest of the bucket and the next one, one run unless the row wraps.
-        const bool lastInRow = column == lastColumn;
-        const uint rowEnd = lastInRow ? to : bucketStart[bucket + 2];
-        uint2 runs[3] = {(uint2)(0), (uint2)(0), (uint2)(0)};
-        if (lastInRow)
-            runs[0] = (uint2)(bucketStart[row], bucketStart[row + 1]);
-        // The next row: three adjacent buckets, one run unless the row wraps between them.
-        const uint below = (((row >> columnBits) + 1u) & lastRow) << columnBits;
-        const uint left = (column - 1u) & lastColumn, right = (column + 1u) & lastColumn;
-        const bool wraps = left > right;
-        runs[1] = (uint2)(bucketStart[below + left], bucketStart[below + (wraps ? lastColumn : right) + 1]);
-        if (wraps)
-            runs[2] = (uint2)(bucketStart[below], bucketStart[below + right + 1]);
         for (uint a = from; a < to; a += 2)
-            nearestOfPair(entries, a, to, rowEnd, runs, contourLength, radius2, gap2);
+            nearestOfPair(entries, a, to, contourLength, radius2, gap2);
     }
 }
 
@@ -275,28 +252,34 @@ VF_INLINE float nearestInCells(__global const uint *bucketStart, __global const 
     return nearestIn(entries, bucketStart[rowBase], bucketStart[rowBase + to + 1], self, length, best2);
 }
 
-// The rings of cells beyond the first for every entry whose nearest other part, if any, lies more
-// than a cell away: ring k holds the cells k away (Chebyshev), and once rings 1…k are searched
-// every vertex nearer than k cells has been seen, so the search stops there when the nearest found
-// is that near, and at the search radius at the latest. One work-item per entry; only its own
-// minimum changes.
+// The rings of cells around every entry whose nearest other part in its own bucket, if any, lies
+// farther than the edge of its cell: ring k holds the cells k away (Chebyshev), and once rings
+// 0…k are searched every vertex nearer than k cells plus that edge distance has been seen, so the
+// search stops there when the nearest found is that near, and at the search radius at the latest.
+// Dense ink rarely gets here: its nearest other part lies within its own cell. One work-item per
+// entry; only its own minimum changes.
 VF_KERNEL void nearestBeyond(GRID_ARGS, float radius, __global const uint *bucketStart, __global const uint4 *entries,
                              uint n, __global const float *contourLength, __global uint *gap2)
 {
     const uint e = get_global_id(0);
     if (e >= n)
         return;
-    const float cell2 = cellSize * cellSize;
-    float best2 = as_float(gap2[e]);
-    if (best2 <= cell2)
-        return;
     const uint4 self = entries[e];
+    const float x = as_float(self.x), y = as_float(self.y);
+    const float cellX = clamp(floor(x / cellSize), -1e9f, 1e9f), cellY = clamp(floor(y / cellSize), -1e9f, 1e9f);
+    const float inX = x - cellX * cellSize, inY = y - cellY * cellSize;
+    const float edge = fmax(0.0f, fmin(fmin(inX, inY), fmin(cellSize - inX, cellSize - inY)));
+    float best2 = as_float(gap2[e]);
+    if (best2 <= edge * edge)
+        return;
     const float length = contourLength[self.w];
-    const int column = (int)clamp(floor(as_float(self.x) / cellSize), -1e9f, 1e9f);
-    const int row = (int)clamp(floor(as_float(self.y) / cellSize), -1e9f, 1e9f);
+    const int column = (int)cellX, row = (int)cellY;
     const uint lastColumn = (1u << columnBits) - 1u, lastRow = (1u << rowBits) - 1u;
     const int rings = (int)ceil(radius / cellSize);
-    for (int k = 2; k <= rings && best2 > (float)((k - 1) * (k - 1)) * cell2; ++k) {
+    for (int k = 1; k <= rings; ++k) {
+        const float seen = edge + (float)(k - 1) * cellSize;
+        if (best2 <= seen * seen)
+            break;
         for (int dy = -k; dy <= k; ++dy) {
             const uint rowBase = ((uint)(row + dy) & lastRow) << columnBits;
             if (dy == -k || dy == k) {
