@@ -123,6 +123,22 @@ std::int64_t checkTopology(const sim::Simulation& simulation, std::map<std::size
     return -1;
 }
 
+// The largest relative difference, over regions, between a region's area (its contours' signed
+// areas summed) and what it should be (their area targets: the area each had when it appeared,
+// grown by the drops that landed inside it).
+double worstAreaError(const sim::Simulation& simulation)
+{
+    std::map<int, std::pair<double, double>> regions;  // area, target
+    for (const sim::Contour& c : simulation.contours()) {
+        regions[c.region].first += sim::signedArea(c.positions);
+        regions[c.region].second += c.targetArea;
+    }
+    double worst = 0.0;
+    for (const auto& [region, area] : regions)
+        worst = std::max(worst, std::abs(area.first - area.second) / std::abs(area.second));
+    return worst;
+}
+
 int run(const Arguments& a)
 {
     const model::Scene scene = sceneOf(a);
@@ -162,11 +178,11 @@ int run(const Arguments& a)
     std::printf("{\"session\": \"%s\", \"seed\": %u, \"backend\": \"%s\", \"steps\": %lld, \"substeps\": %lld, "
                 "\"seconds\": %.4f, \"vertex_steps\": %lld, \"vertex_steps_per_second\": %.1f, \"peak_vertices\": %zu, "
                 "\"end_vertices\": %zu, \"peak_rss_bytes\": %ld, \"limit_reached\": %s, \"phase_seconds\": {%s}, "
-                "\"phases_total\": %.4f, \"first_crossing_step\": %lld}\n",
+                "\"phases_total\": %.4f, \"first_crossing_step\": %lld, \"worst_area_error\": %.3g}\n",
                 a.session.c_str(), a.seed, simulation.backendName().c_str(), (long long)step, (long long)substeps,
                 seconds, (long long)vertexSteps, double(vertexSteps) / seconds, peak, simulation.vertexCount(),
                 peakResidentBytes(), limit ? "true" : "false", phases.str().c_str(), phaseTotal,
-                (long long)firstCrossing);
+                (long long)firstCrossing, worstAreaError(simulation));
     return 0;
 }
 

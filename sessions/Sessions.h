@@ -45,7 +45,7 @@ model::Scene fineDetail(const FineDetailOptions& options, std::uint32_t seed);
 struct ShapeDesignOptions {
     double viscosity = 0.3;
     int strokes = 5;
-    double maxSpacing = 0.002;
+    double maxSpacing = 0.0002;  // a logo's outlines, finely
     double dt = 0.005;
     std::int64_t steps = 600;
 };

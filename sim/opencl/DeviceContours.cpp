@@ -170,7 +170,8 @@ struct DeviceContours::Impl {
     Pass countSplits(const FlowBinding& flow, const Motion& motion);
     Pass splitPass(const FlowBinding& flow, const Motion& motion);
     bool collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours);
-    void markActiveTiles();
+    void lookAtEveryTile();
+    void clearMarks(cl::Buffer& marks);
     void clearPassFlags();
     Pass readPass();
     void adopt(std::size_t total);
@@ -190,7 +191,7 @@ struct DeviceContours::Impl {
     Scan countScan, sumScan;
     cl::Kernel advect, strain, positionsOf, arcTilesAndCount, gridScatter, nearestOtherPart, nearestBeyond, rawSpacing, smoothSpacing,
         splitCount, splitScatter, recountContours, collapseDecide, collapseScatter, recentreInPlace,
-        markActiveTilesKernel, contourTermTiles, contourTermSums, correctArea;
+        contourTermTiles, contourTermSums, correctArea;
 
     // Vertices: two sets (compaction scatters from one into the other, then they swap) and scratch.
     std::size_t capacity = 0, vertices = 0;
@@ -203,6 +204,9 @@ struct DeviceContours::Impl {
     cl::Buffer work;        // uint per vertex: grid bucket counts, then starts; collapse actions
     cl::Buffer tileTotals;  // one acc4 per tile: uint, acc_t or acc4 totals, as the pass needs
     cl::Buffer tileActive;  // uint per tile: refinement looks at its vertices (contours_refine.cl)
+    // uint per tile: where the next pass looks, marked by a counting kernel (tileMarks, where
+    // nothing moves) and by a scatter (tileMarksMoved, where its vertices land).
+    cl::Buffer tileMarks, tileMarksMoved;
 
     // Contours: device arrays, and the host's regions and area targets.
     std::size_t contourCapacity = 0;
@@ -211,10 +215,6 @@ struct DeviceContours::Impl {
     cl::Buffer contourOffset, contourCount;  // uint
     cl::Buffer contourLength;                // float, the proximity term's arc lengths
     cl::Buffer contourTarget, contourLambda; // acc_t, the area correction
-    // uint: refinement's contours to look at in this round, those changed in it, and those the
-    // collapse passes of this round look at (split, or with a short edge, in the split count).
-    cl::Buffer contourActive, contourChanged, contourCollapsing;
-    const cl::Buffer* lookingAt = nullptr;  // the contours tileActive covers; none: every contour
 
     cl::Buffer weights;  // eq. 6's Gaussian, constant
     cl::Buffer status;   // statusWords uint
@@ -259,7 +259,6 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, c
                                 {&collapseDecide, "collapseDecide"},
                                 {&collapseScatter, "collapseScatter"},
                                 {&recentreInPlace, "recentreInPlace"},
-                                {&markActiveTilesKernel, "markActiveTiles"},
                                 {&contourTermTiles, "contourTermTiles"},
                                 {&contourTermSums, "contourTermSums"},
                                 {&correctArea, "correctArea"}})
@@ -312,6 +311,8 @@ bool DeviceContours::Impl::reserve(std::size_t needed)
     work = buffer(paddedCapacity * sizeof(cl_uint));
     tileTotals = buffer((paddedCapacity / localSize + 1) * 4 * accSize);
     tileActive = buffer((paddedCapacity / localSize + 1) * sizeof(cl_uint));
+    tileMarks = buffer((paddedCapacity / localSize + 1) * sizeof(cl_uint));
+    tileMarksMoved = buffer((paddedCapacity / localSize + 1) * sizeof(cl_uint));
     capacity = grown;
     return true;
 }
@@ -333,9 +334,6 @@ void DeviceContours::Impl::reserveContours(std::size_t needed)
     contourTarget = target;
     contourLength = buffer(grown * sizeof(float));
     contourLambda = buffer(grown * accSize);
-    contourActive = buffer(grown * sizeof(cl_uint));
-    contourChanged = buffer(grown * sizeof(cl_uint));
-    contourCollapsing = buffer(grown * sizeof(cl_uint));
     contourCapacity = grown;
 }
 
@@ -423,23 +421,14 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
 // collapse pass changes nothing is the last: the next split pass would find nothing, and the
 // collapse pass after it would see what this one saw. That saves a counting pass per step.
 //
-// Every contour takes part in the first round's split pass, each later round's split pass only the
-// contours that changed in the round before, and a round's collapse passes only those that split
-// in it or had a short edge before it (contours_refine.cl): the others would find nothing to do,
+// The round's first split pass looks at every tile (everything moved); every later pass only at
+// the tiles the pass before it marked (contours_refine.cl): the others would find nothing to do,
 // so the result is the same as looking at all of them.
 bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
 {
     bool withinBudget = true, settled = false;
-    const std::size_t contours = regions.size();
+    lookAtEveryTile();
     for (int round = 0; round < maxRounds && withinBudget && !settled; ++round) {
-        lookingAt = nullptr;
-        if (round > 0) {
-            std::swap(contourActive, contourChanged);
-            lookingAt = &contourActive;
-        }
-        queue.enqueueFillBuffer(contourChanged, cl_uint(0), 0, contours * sizeof(cl_uint));
-        queue.enqueueFillBuffer(contourCollapsing, cl_uint(0), 0, contours * sizeof(cl_uint));
-        markActiveTiles();
         const Pass split = [&] {
             const PhaseClock::Scope timing(clock, Phase::Split);
             return splitPass(flow, motion);
@@ -447,35 +436,28 @@ bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
         withinBudget = split.withinBudget;
         // After a split the short edges flagged before it are stale: every colour gets a look.
         const cl_uint colours = split.changed ? flagsShortEdge : split.flags & flagsShortEdge;
-        if (getenv("VF_COUNT")) fprintf(stderr, " round %d: split %zu -> %zu colours %u\n", round, vertices, split.total, colours);
         bool collapsed = false;
         if (colours != 0) {
             const PhaseClock::Scope timing(clock, Phase::Collapse);
-            lookingAt = &contourCollapsing;
-            markActiveTiles();
             collapsed = collapsePass(flow, motion, colours);
         }
         settled = !collapsed && !(split.flags & flagSplitCapped);
     }
     if (!settled && withinBudget) {
         const PhaseClock::Scope timing(clock, Phase::Split);
-        std::swap(contourActive, contourChanged);
-        lookingAt = &contourActive;
-        markActiveTiles();
         withinBudget = splitPass(flow, motion).withinBudget;
     }
     return withinBudget;
 }
 
-// tileActive for the present layout of the store: the tiles of the contours in *lookingAt, or every
-// tile.
-void DeviceContours::Impl::markActiveTiles()
+void DeviceContours::Impl::lookAtEveryTile()
 {
-    const std::size_t bytes = (tiles() + 1) * sizeof(cl_uint);
-    queue.enqueueFillBuffer(tileActive, cl_uint(lookingAt ? 0 : 1), 0, bytes);
-    if (lookingAt)
-        launch(queue, markActiveTilesKernel, regions.size(), contourOffset, contourCount, cl_uint(regions.size()),
-               *lookingAt, tileActive);
+    queue.enqueueFillBuffer(tileActive, cl_uint(1), 0, (tiles() + 1) * sizeof(cl_uint));
+}
+
+void DeviceContours::Impl::clearMarks(cl::Buffer& marks)
+{
+    queue.enqueueFillBuffer(marks, cl_uint(0), 0, (paddedCapacity / localSize + 1) * sizeof(cl_uint));
 }
 
 void DeviceContours::Impl::clearPassFlags()
@@ -497,49 +479,55 @@ DeviceContours::Impl::Pass DeviceContours::Impl::readPass()
     return {true, total != vertices, words[statusPass], total};
 }
 
-// After a scatter into `back`: contours get their new ranges, the sets swap.
+// After a scatter into `back` that marked the tiles to look at next in tileMarksMoved: contours
+// get their new ranges, the sets swap.
 void DeviceContours::Impl::adopt(std::size_t total)
 {
     launch(queue, recountContours, regions.size(), contourOffset, contourCount, cl_uint(regions.size()), tileActive,
            tileOffset, tileTotals);
     std::swap(front, back);
+    std::swap(tileActive, tileMarksMoved);
     vertices = total;
-    markActiveTiles();
 }
 
 DeviceContours::Impl::Pass DeviceContours::Impl::countSplits(const FlowBinding& flow, const Motion& motion)
 {
     clearPassFlags();
+    clearMarks(tileMarks);
     launch(queue, splitCount, laneGroups(vertices + 1), flow, motion, front.motion, front.spacing, front.contour,
-           contourOffset, contourCount, cl_uint(vertices), tileActive, contourChanged, contourCollapsing, tileOffset,
-           tileTotals, cl_uint(tiles()), status);
+           contourOffset, contourCount, cl_uint(vertices), tileActive, tileMarks, tileOffset, tileTotals,
+           cl_uint(tiles()), status);
     countScan.exclusive(tileTotals, tiles() + 1);
     return readPass();
 }
 
+// Leaves in tileActive the tiles the next pass looks at.
 DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& flow, const Motion& motion)
 {
     Pass pass = countSplits(flow, motion);
-    if (!pass.changed)
+    if (!pass.changed) {
+        std::swap(tileActive, tileMarks);
         return pass;
-    if (pass.total > settings.maxVertices)
-        return {false, false, pass.flags, vertices};
-    if (pass.total > capacity) {
-        if (!reserve(pass.total))
-            return {false, false, pass.flags, vertices};
-        markActiveTiles();
-        pass = countSplits(flow, motion);  // the counts lived in the scratch that reserve() replaced
     }
+    if (pass.total > capacity && pass.total <= settings.maxVertices && reserve(pass.total)) {
+        lookAtEveryTile();  // the counts lived in the scratch that reserve() replaced
+        pass = countSplits(flow, motion);
+    }
+    if (pass.total > capacity || pass.total > settings.maxVertices) {
+        std::swap(tileActive, tileMarks);
+        return {false, false, pass.flags, vertices};
+    }
+    clearMarks(tileMarksMoved);
     launch(queue, splitScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour,
            contourOffset, contourCount, cl_uint(vertices), tileActive, tileOffset, tileTotals, back.motion,
-           back.spacing, back.contour, status);
+           back.spacing, back.contour, tileMarksMoved, status);
     adopt(pass.total);
     return pass;
 }
 
 // The colour classes in `colours` (bit c for colour c) in turn, each a compaction of its deletions
 // (or, with none, recentring in place). Each decision pass also says which later colours still
-// touch short edges.
+// touch short edges. Leaves in tileActive the tiles the next pass looks at.
 bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours)
 {
     bool changed = false;
@@ -547,20 +535,23 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
         if (!(colours & (1u << colour)))
             continue;
         clearPassFlags();
+        clearMarks(tileMarks);
         launch(queue, collapseDecide, laneGroups(vertices + 1), flow, motion, front.motion, front.spacing, front.contour,
-               contourOffset, contourCount, cl_uint(vertices), colour, tileActive, contourChanged, work, tileOffset,
+               contourOffset, contourCount, cl_uint(vertices), colour, tileActive, tileMarks, work, tileOffset,
                tileTotals, cl_uint(tiles()), status);
         countScan.exclusive(tileTotals, tiles() + 1);
         const Pass pass = readPass();
-        if (getenv("VF_COUNT")) fprintf(stderr, "  colour %u: deleted %zu recentred %d next colours %u\n", colour, vertices - pass.total, int((pass.flags & flagRecentred) != 0), pass.flags & flagsShortEdge);
         if (pass.changed) {
+            clearMarks(tileMarksMoved);
             launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing,
                    front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, work, tileOffset,
-                   tileTotals, back.motion, back.spacing, back.contour);
+                   tileTotals, back.motion, back.spacing, back.contour, tileMarksMoved);
             adopt(pass.total);
-        } else if (pass.flags & flagRecentred) {
-            launch(queue, recentreInPlace, laneGroups(vertices), flow, motion, front.motion, front.spacing,
-                   front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, work);
+        } else {
+            if (pass.flags & flagRecentred)
+                launch(queue, recentreInPlace, laneGroups(vertices), flow, motion, front.motion, front.spacing,
+                       front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, work);
+            std::swap(tileActive, tileMarks);
         }
         changed = changed || pass.changed || (pass.flags & flagRecentred);
         colours = pass.flags & flagsShortEdge;

@@ -5,23 +5,40 @@
 // The counting kernels fuse the first level of the scan: they leave each vertex's offset within
 // its tile of VF_LOCAL vertices and each tile's total, which Scan turns into tile bases.
 //
-// Refinement rounds after the first only look at the contours that changed in the round before
-// (contourActive): a contour that neither split nor collapsed in a round has been checked by the
-// split count and every collapse colour in its present state, which the next round would only
-// repeat. A round's collapse passes only look at the contours that split in it or had a short edge
-// in its split count (contourCollapsing): the others have no edge for a collapse to act on. The
-// split count's short edges are those of collapseAction (length < (d_a + d_b)/4, more than 3
-// vertices). Counting kernels skip a tile with no vertex of an active contour (tileActive) and
-// leave only its total: every vertex in it stays, one to one, so its offsets are the vertices'
-// places in the tile and are never written. A work-group (eight tiles) none of whose tiles is
-// active returns before its barriers; the skipped tiles of other work-groups join the scan idle.
+// Work follows what changed. A pass looks only at the tiles (tileActive) that the pass before it
+// marked: the tiles around every vertex that needs attention, one with a short edge after it (for
+// the collapse passes; length < (d_a + d_b)/4, more than 3 vertices) or whose edges the pass
+// changed (inserted vertices, a removed or recentred neighbour: for the split passes). A counting
+// kernel marks them in the layout it reads (tileMarks, for when nothing moves) and flags its
+// vertices' attention in their tile offsets; a scatter marks them again where they land
+// (for the layout it writes). The first pass of a step looks at every tile (everything moved);
+// a tile nobody marked has nothing a pass could change. Counting kernels skip a tile that is not
+// looked at and leave only its total: every vertex in it stays, one to one, so its offsets are
+// the vertices' places in the tile and are never written. A work-group (eight tiles) none of
+// whose tiles is looked at returns before its barriers; the skipped tiles of other work-groups
+// join the scan idle.
 #define TILE_ARGS __global const uint *tileActive
+#define ATTENTION 0x80000000u  // in a tile offset: the vertex needs attention in the next pass
 
 // The store index vertex i moves to, or the new size of the store for i = n.
 VF_INLINE uint scannedOffset(TILE_ARGS, __global const uint *tileOffset, __global const uint *tileBase, uint i)
 {
     const uint tile = i / VF_LOCAL;
-    return tileBase[tile] + (tileActive[tile] ? tileOffset[i] : i % VF_LOCAL);
+    return tileBase[tile] + (tileActive[tile] ? tileOffset[i] & ~ATTENTION : i % VF_LOCAL);
+}
+
+// Whether vertex i, looked at in this pass, needs attention in the next.
+VF_INLINE bool needsAttention(TILE_ARGS, __global const uint *tileOffset, uint i)
+{
+    return tileActive[i / VF_LOCAL] && (tileOffset[i] & ATTENTION);
+}
+
+// Marks the tiles of store indices a, b and c for the next pass (plain stores of the same value).
+VF_INLINE void markTiles(__global uint *marks, uint a, uint b, uint c)
+{
+    marks[a / VF_LOCAL] = 1;
+    marks[b / VF_LOCAL] = 1;
+    marks[c / VF_LOCAL] = 1;
 }
 
 // The counting kernels run over one work-item per VF_LANES of the n + 1 vertices (vertex n produces
@@ -58,23 +75,11 @@ VF_INLINE bool skippedGroup(TILE_ARGS, uint n, __global uint *tileTotals, uint t
     return true;
 }
 
-// Marks the tiles holding vertices of active contours (tileActive cleared before).
-VF_KERNEL void markActiveTiles(__global const uint *contourOffset, __global const uint *contourCount, uint contours,
-                               __global const uint *contourActive, __global uint *tileActive)
-{
-    const uint c = get_global_id(0);
-    if (c >= contours || !contourActive[c] || contourCount[c] == 0)
-        return;
-    const uint first = contourOffset[c], last = first + contourCount[c] - 1;
-    for (uint tile = first / VF_LOCAL; tile <= last / VF_LOCAL; ++tile)
-        tileActive[tile] = 1;  // a plain store: every writer writes the same value
-}
-
 // Leaves, from the counts `produced` of this work-item's lanes, each vertex's offset within its tile
-// (tiles looked at only) and each tile's total; all work-items of the group must call it.
-// `itemBefore` holds VF_LOCAL entries.
-VF_INLINE void scanTiles(__local uint *scratch, __local uint *itemBefore, const uint *produced, bool active, uint n,
-                         __global uint *tileOffset, __global uint *tileTotals, uint tiles)
+// with its attention flag (tiles looked at only) and each tile's total; all work-items of the group
+// must call it. `itemBefore` holds VF_LOCAL entries.
+VF_INLINE void scanTiles(__local uint *scratch, __local uint *itemBefore, const uint *produced, const bool *attention,
+                         bool active, uint n, __global uint *tileOffset, __global uint *tileTotals, uint tiles)
 {
     const uint lid = get_local_id(0), first = VF_LANES * get_global_id(0), tile = first / VF_LOCAL;
     uint before[VF_LANES], sum = 0;
@@ -89,7 +94,7 @@ VF_INLINE void scanTiles(__local uint *scratch, __local uint *itemBefore, const 
     const uint tileStart = itemBefore[tileItem];
     if (active) {
         for (int k = 0; k < VF_LANES && first + k <= n; ++k)
-            tileOffset[first + k] = itemBefore[lid] - tileStart + before[k];
+            tileOffset[first + k] = (itemBefore[lid] - tileStart + before[k]) | (attention[k] ? ATTENTION : 0u);
     }
     if (lid == tileItem && tile < tiles)
         tileTotals[tile] = active ? (nextTileItem < VF_LOCAL ? itemBefore[nextTileItem] : total) - tileStart
@@ -178,11 +183,10 @@ VF_INLINE void copyLanes(CONST_VERTEX_SET(in), uint first, VERTEX_SET(out), uint
 
 // Per vertex: 1 + the vertices its edge to the next one gets. Also flags short edges by the colours
 // of their ends, so the host can skip the collapse passes that would find nothing to do, and a
-// split stopped by the depth cap.
+// split stopped by the depth cap. A split edge or a short one needs attention (marks).
 VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
-                          __global const uint *contourCount, uint n, TILE_ARGS, __global uint *contourChanged,
-                          __global uint *contourCollapsing, __global uint *tileOffset, __global uint *tileTotals,
-                          uint tiles, __global uint *status)
+                          __global const uint *contourCount, uint n, TILE_ARGS, __global uint *marks,
+                          __global uint *tileOffset, __global uint *tileTotals, uint tiles, __global uint *status)
 {
     __local uint scratch[VF_SCAN_SCRATCH], itemBefore[VF_LOCAL];
     __local uint groupFlags;
@@ -203,57 +207,72 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
         settled = all((length < 0.99999f * spacing) & (length > 0.50001f * spacing));
     }
     uint produced[VF_LANES];
+    bool attention[VF_LANES];
     for (int k = 0; k < VF_LANES; ++k) {
         const uint i = first + k;
         produced[k] = settled ? 1 : 0;
+        attention[k] = false;
         if (settled || !active || i >= n)
             continue;
-        const uint c = inContour[i], count = contourCount[c];
-        const uint j = nextIn(i, contourOffset[c], count);
+        const uint c = inContour[i], from = contourOffset[c], count = contourCount[c];
+        const uint j = nextIn(i, from, count);
         const float4 a = inMotion[i], b = inMotion[j];
         const float length = distance(a.xy, b.xy), spacing = 0.5f * (inSpacing[i] + inSpacing[j]);
         produced[k] = 1;
         bool capped = false;
-        if (length > spacing) {
+        if (length > spacing)
             produced[k] += splitEdge(FLOW_PASS, MOTION_PASS, a, b, inSpacing[i], inSpacing[j], 0, 0, 0, 0, 0, c,
                                      &capped);
-            contourChanged[c] = 1;  // plain stores: every writer writes the same value
-            contourCollapsing[c] = 1;
-        }
         if (capped)
             atomic_or(&groupFlags, FLAG_SPLIT_CAPPED);
-        if (length < 0.5f * spacing && count > 3) {
-            atomic_or(&groupFlags, shortEdgeFlags(i - contourOffset[c], count));
-            contourCollapsing[c] = 1;
-        }
+        const bool shortEdge = length < 0.5f * spacing && count > 3;
+        if (shortEdge)
+            atomic_or(&groupFlags, shortEdgeFlags(i - from, count));
+        attention[k] = shortEdge || produced[k] > 1;
+        if (attention[k])
+            markTiles(marks, previousIn(i, from, count), i, j);
     }
-    scanTiles(scratch, itemBefore, produced, active, n, tileOffset, tileTotals, tiles);
+    scanTiles(scratch, itemBefore, produced, attention, active, n, tileOffset, tileTotals, tiles);
     if (get_local_id(0) == 0 && groupFlags)
         atomic_or(&status[STATUS_PASS], groupFlags);
 }
 
+// Whether any of the group's vertices (from `first`) needs attention: its tile is looked at and
+// its flag set.
+VF_INLINE bool groupNeedsAttention(TILE_ARGS, __global const uint *tileOffset, uint first)
+{
+    return tileActive[first / VF_LOCAL] && any((vload8(0, tileOffset + first) & (uint8)(ATTENTION)) != (uint8)(0u));
+}
+
 VF_KERNEL void splitScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
                             __global const uint *contourCount, uint n, TILE_ARGS, __global const uint *tileOffset,
-                            __global const uint *tileBase, VERTEX_SET(out), __global uint *status)
+                            __global const uint *tileBase, VERTEX_SET(out), __global uint *marks,
+                            __global uint *status)
 {
     const uint g = get_global_id(0), first = VF_LANES * g;
     if (first >= n)
         return;
     const uint groupAt = scannedOffset(tileActive, tileOffset, tileBase, first);
-    if (wholeGroup(g, n) && scannedOffset(tileActive, tileOffset, tileBase, first + VF_LANES) - groupAt == VF_LANES) {
+    if (wholeGroup(g, n) && scannedOffset(tileActive, tileOffset, tileBase, first + VF_LANES) - groupAt == VF_LANES &&
+        !groupNeedsAttention(tileActive, tileOffset, first)) {
         copyLanes(inMotion, inSpacing, inContour, first, outMotion, outSpacing, outContour, groupAt);
         return;
     }
     for (uint i = first; i < min(first + VF_LANES, n); ++i) {
         const uint at = scannedOffset(tileActive, tileOffset, tileBase, i);
         const uint expected = scannedOffset(tileActive, tileOffset, tileBase, i + 1) - at - 1;
-        const uint c = inContour[i];
+        const uint c = inContour[i], from = contourOffset[c], count = contourCount[c];
         outMotion[at] = inMotion[i];
         outSpacing[at] = inSpacing[i];
         outContour[at] = c;
+        const uint j = nextIn(i, from, count);
+        if (needsAttention(tileActive, tileOffset, i))
+            markTiles(marks, scannedOffset(tileActive, tileOffset, tileBase, previousIn(i, from, count)), at + expected,
+                      scannedOffset(tileActive, tileOffset, tileBase, j));
         if (expected == 0)
             continue;
-        const uint j = nextIn(i, contourOffset[c], contourCount[c]);
+        for (uint k = 0; k <= expected; k += VF_LOCAL)
+            marks[(at + k) / VF_LOCAL] = 1;
         bool capped = false;
         const uint inserted = splitEdge(FLOW_PASS, MOTION_PASS, inMotion[i], inMotion[j], inSpacing[i], inSpacing[j],
                                         outMotion, outSpacing, outContour, at + 1, expected, c, &capped);
@@ -355,9 +374,8 @@ VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, __global const float4 *m
 }
 
 VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *motion, __global const float *spacing,
-                              CONTOUR_ARGS, uint n,
-                              uint colour, TILE_ARGS, __global uint *contourChanged, __global uint *action,
-                              __global uint *tileOffset, __global uint *tileTotals, uint tiles,
+                              CONTOUR_ARGS, uint n, uint colour, TILE_ARGS, __global uint *marks,
+                              __global uint *action, __global uint *tileOffset, __global uint *tileTotals, uint tiles,
                               __global uint *status)
 {
     __local uint scratch[VF_SCAN_SCRATCH], itemBefore[VF_LOCAL];
@@ -370,9 +388,11 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *mot
         groupFlags = 0;
     barrier(CLK_LOCAL_MEM_FENCE);
     uint kept[VF_LANES];
+    bool attention[VF_LANES];
     for (int lane = 0; lane < VF_LANES; ++lane) {
         const uint i = first + lane;
         kept[lane] = 0;
+        attention[lane] = false;
         if (!active || i >= n)
             continue;
         uint act = ACTION_KEEP;
@@ -384,16 +404,20 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *mot
                 act = ACTION_KEEP;
         }
         const uint j = nextIn(i, from, count);
-        if (count > 3 && distance(motion[i].xy, motion[j].xy) < 0.25f * (spacing[i] + spacing[j]))
+        const float length = distance(motion[i].xy, motion[j].xy), spacingIJ = 0.5f * (spacing[i] + spacing[j]);
+        const bool shortEdge = count > 3 && length < 0.5f * spacingIJ;
+        if (shortEdge)
             atomic_or(&groupFlags, shortEdgeFlags(k, count));
         if (act == ACTION_RECENTRE)
             atomic_or(&groupFlags, FLAG_RECENTRED);
-        if (act != ACTION_KEEP)
-            contourChanged[c] = 1;
+        // A long edge (left by a recentring of an earlier colour) is for the next split pass.
+        attention[lane] = shortEdge || length > spacingIJ || act != ACTION_KEEP;
+        if (attention[lane])
+            markTiles(marks, previousIn(i, from, count), i, j);
         action[i] = act;
         kept[lane] = act != ACTION_DELETE;
     }
-    scanTiles(scratch, itemBefore, kept, active, n, tileOffset, tileTotals, tiles);
+    scanTiles(scratch, itemBefore, kept, attention, active, n, tileOffset, tileTotals, tiles);
     if (get_local_id(0) == 0 && groupFlags)
         atomic_or(&status[STATUS_PASS], groupFlags);
 }
@@ -408,28 +432,37 @@ VF_INLINE void writeRecentred(FLOW_PARAMS, MOTION_ARGS, __global const float4 *i
     outSpacing[at] = fmin(inSpacing[a], inSpacing[b]);
 }
 
+// Every vertex that acts needs attention, so a group with none stays as it is.
 VF_KERNEL void collapseScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
                                __global const uint *contourCount, uint n, TILE_ARGS, __global const uint *action,
-                               __global const uint *tileOffset, __global const uint *tileBase, VERTEX_SET(out))
+                               __global const uint *tileOffset, __global const uint *tileBase, VERTEX_SET(out),
+                               __global uint *marks)
 {
     const uint g = get_global_id(0), first = VF_LANES * g;
     if (first >= n)
         return;
-    const bool active = tileActive[first / VF_LOCAL];  // skipped tiles wrote no actions
-    if (wholeGroup(g, n) && !(active && any(vload8(0, action + first) != (uint8)(ACTION_KEEP)))) {
+    if (wholeGroup(g, n) && !groupNeedsAttention(tileActive, tileOffset, first)) {
         copyLanes(inMotion, inSpacing, inContour, first, outMotion, outSpacing, outContour,
                   scannedOffset(tileActive, tileOffset, tileBase, first));
         return;
     }
     for (uint i = first; i < min(first + VF_LANES, n); ++i) {
-        const uint act = active ? action[i] : ACTION_KEEP;
+        const bool attention = needsAttention(tileActive, tileOffset, i);
+        const uint act = attention ? action[i] : ACTION_KEEP;
+        const uint c = inContour[i], from = contourOffset[c], count = contourCount[c];
+        if (attention) {
+            // The neighbours of a vertex that acts keep their places in this pass.
+            const uint before = scannedOffset(tileActive, tileOffset, tileBase, previousIn(i, from, count));
+            const uint after = scannedOffset(tileActive, tileOffset, tileBase, nextIn(i, from, count));
+            markTiles(marks, before, act == ACTION_DELETE ? before : scannedOffset(tileActive, tileOffset, tileBase, i),
+                      after);
+        }
         if (act == ACTION_DELETE)
             continue;
-        const uint at = scannedOffset(tileActive, tileOffset, tileBase, i), c = inContour[i];
+        const uint at = scannedOffset(tileActive, tileOffset, tileBase, i);
         outContour[at] = c;
         if (act == ACTION_RECENTRE) {
-            writeRecentred(FLOW_PASS, MOTION_PASS, inMotion, inSpacing, i, contourOffset[c], contourCount[c],
-                           outMotion, outSpacing, at);
+            writeRecentred(FLOW_PASS, MOTION_PASS, inMotion, inSpacing, i, from, count, outMotion, outSpacing, at);
         } else {
             outMotion[at] = inMotion[i];
             outSpacing[at] = inSpacing[i];
