@@ -35,7 +35,10 @@ void ProximityGrid::build(const std::vector<Contour>& contours, double radius, d
         lo = hi = Vec2(0.0);
     const Vec2 extent = hi - lo;
     m_radius = radius;
-    m_cell = std::max({cell, extent.x / maxCellsPerAxis, extent.y / maxCellsPerAxis, 1e-300});
+    // No more cells than about twice the vertices: fine cells over a wide spread of few vertices
+    // would cost memory for nothing.
+    const double sparse = std::sqrt(std::max(extent.x, cell) * std::max(extent.y, cell) / (2.0 * double(std::max<std::size_t>(total, 1))));
+    m_cell = std::max({cell, sparse, extent.x / maxCellsPerAxis, extent.y / maxCellsPerAxis, 1e-300});
     m_origin = lo;
     m_columns = int(extent.x / m_cell) + 1;
     m_rows = int(extent.y / m_cell) + 1;

@@ -144,7 +144,7 @@ auto guarded(F&& f) -> decltype(f())
 } // namespace
 
 struct DeviceContours::Impl {
-    Impl(Device& device, const TrackingSettings& settings, const std::string& flowSource);
+    Impl(Device& device, const TrackingSettings& settings, Vec2 canvas, const std::string& flowSource);
     // Copies into the staging buffers may still be running: they finish before the buffers go.
     ~Impl();
 
@@ -185,6 +185,7 @@ struct DeviceContours::Impl {
     Device& device;
     cl::CommandQueue& queue;
     const TrackingSettings settings;
+    const Vec2 canvas;
     const bool fp64;
     const std::size_t accSize;
     const std::optional<std::size_t> vertexCap;  // VF_OPENCL_MAX_VERTICES
@@ -225,10 +226,12 @@ struct DeviceContours::Impl {
     PhaseClock* clock = nullptr;
 };
 
-DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, const std::string& flowSource)
+DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, Vec2 canvas_,
+                           const std::string& flowSource)
     : device(device_)
     , queue(device_.queue())
     , settings(settings_)
+    , canvas(canvas_)
     , fp64(device_.hasFp64())
     , accSize(fp64 ? sizeof(double) : sizeof(float))
     , vertexCap(vertexCapFromEnvironment())
@@ -343,7 +346,9 @@ Grid DeviceContours::Impl::grid() const
     const std::size_t buckets =
         std::min(std::bit_ceil(std::max(vertices, minCapacity)), std::bit_floor(paddedCapacity - 1));
     const auto bits = cl_uint(std::countr_zero(buckets));
-    return {cl_float(settings.proximityCell()), (bits + 1) / 2, bits / 2};
+    // Few vertices spread over the canvas in fine cells would alias many cells onto each bucket.
+    const double cell = std::max(settings.proximityCell(), std::sqrt(canvas.x * canvas.y / double(buckets)));
+    return {cl_float(cell), (bits + 1) / 2, bits / 2};
 }
 
 bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, bool startKnown)
@@ -698,8 +703,9 @@ DeviceContours::Impl::~Impl()
     }
 }
 
-DeviceContours::DeviceContours(Device& device, const TrackingSettings& settings, const std::string& flowSource)
-    : m(guarded([&] { return std::make_unique<Impl>(device, settings, flowSource); }))
+DeviceContours::DeviceContours(Device& device, const TrackingSettings& settings, Vec2 canvas,
+                               const std::string& flowSource)
+    : m(guarded([&] { return std::make_unique<Impl>(device, settings, canvas, flowSource); }))
 {
 }
 

@@ -19,9 +19,10 @@ namespace vf::sim::opencl {
 class DeviceContours {
 public:
     // `flowSource` is the OpenCL C that defines flowVelocity, flowVelocityLanes and flowVorticity
-    // (FlowBinding.h); flow.h.cl comes before it.
-    // Throws DeviceError.
-    DeviceContours(Device& device, const TrackingSettings& settings, const std::string& flowSource);
+    // (FlowBinding.h); flow.h.cl comes before it. `canvas` is the canvas size, where the ink mostly
+    // lies: the proximity grid's cells are never so small that the canvas has more of them than
+    // the grid has buckets. Throws DeviceError.
+    DeviceContours(Device& device, const TrackingSettings& settings, Vec2 canvas, const std::string& flowSource);
     ~DeviceContours();
 
     // As ContourTracker::addContour for each polygon (resampled so no edge exceeds d_max; area

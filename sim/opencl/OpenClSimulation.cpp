@@ -34,7 +34,9 @@ OpenClSimulation::OpenClSimulation(const SimulationSettings& settings, std::opti
     } else {
         m_placeholders.field = cl::Buffer(m_device.context(), CL_MEM_READ_ONLY, sizeof(float));
     }
-    m_contours = std::make_unique<DeviceContours>(m_device, settings.tracking, flowSource(settings));
+    m_contours = std::make_unique<DeviceContours>(m_device, settings.tracking,
+                                                  Vec2(settings.fluid.width, settings.fluid.height),
+                                                  flowSource(settings));
 }
 
 OpenClSimulation::~OpenClSimulation() = default;

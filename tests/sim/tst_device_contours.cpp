@@ -96,7 +96,7 @@ public:
         , m_settings(settings)
         , m_host(hostFlow(flow).u, hostFlow(flow).v)
         , m_tracker(settings)
-        , m_contours(device, settings, deviceFlowSource)
+        , m_contours(device, settings, sim::Vec2(1.0), deviceFlowSource)
         , m_placeholder(device.context(), CL_MEM_READ_ONLY, sizeof(float))
         , m_withReference(withReference)
     {
