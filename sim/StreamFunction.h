@@ -21,6 +21,7 @@
 // negated), which continues it smoothly across the wall.
 #include "sim/FluidSolver.h"
 
+#include <utility>
 #include <vector>
 
 namespace vf::sim {
@@ -76,6 +77,9 @@ struct StreamField::Stencil {
     int stride;
     SplineWeights x, y;
     double flipX, flipY;   // −1 where the point was reflected across a wall
+
+    std::pair<double, double> sums(const double (&wxA)[4], const double (&wyA)[4], const double (&wxB)[4],
+                                   const double (&wyB)[4]) const;
 };
 
 inline StreamField::Stencil StreamField::stencilAt(Vec2 p) const
@@ -91,31 +95,31 @@ inline StreamField::Stencil StreamField::stencilAt(Vec2 p) const
     return s;
 }
 
+// Two sums Σ_b wy[b] · Σ_a wx[a] · ψ(i − 1 + a, j − 1 + b) over the stencil's 4 × 4 corners, with
+// the weights A and B, from one pass over the corners.
+inline std::pair<double, double> StreamField::Stencil::sums(const double (&wxA)[4], const double (&wyA)[4],
+                                                            const double (&wxB)[4], const double (&wyB)[4]) const
+{
+    double a = 0.0, b = 0.0;
+    const double* row = corner;
+    for (int r = 0; r < 4; ++r, row += stride) {
+        a += wyA[r] * (wxA[0] * row[0] + wxA[1] * row[1] + wxA[2] * row[2] + wxA[3] * row[3]);
+        b += wyB[r] * (wxB[0] * row[0] + wxB[1] * row[1] + wxB[2] * row[2] + wxB[3] * row[3]);
+    }
+    return {a, b};
+}
+
 inline Vec2 StreamField::velocity(Vec2 p) const
 {
     const Stencil s = stencilAt(p);
-    double dPsiDy = 0.0, dPsiDx = 0.0;
-    const double* row = s.corner;
-    for (int b = 0; b < 4; ++b, row += s.stride) {
-        const double along = s.x.w[0] * row[0] + s.x.w[1] * row[1] + s.x.w[2] * row[2] + s.x.w[3] * row[3];
-        const double across = s.x.dw[0] * row[0] + s.x.dw[1] * row[1] + s.x.dw[2] * row[2] + s.x.dw[3] * row[3];
-        dPsiDy += s.y.dw[b] * along;
-        dPsiDx += s.y.w[b] * across;
-    }
+    const auto [dPsiDy, dPsiDx] = s.sums(s.x.w, s.y.dw, s.x.dw, s.y.w);
     return {s.flipX * dPsiDy / hy, -s.flipY * dPsiDx / hx};
 }
 
 inline double StreamField::vorticity(Vec2 p) const
 {
     const Stencil s = stencilAt(p);
-    double psiXX = 0.0, psiYY = 0.0;
-    const double* row = s.corner;
-    for (int b = 0; b < 4; ++b, row += s.stride) {
-        const double along = s.x.w[0] * row[0] + s.x.w[1] * row[1] + s.x.w[2] * row[2] + s.x.w[3] * row[3];
-        const double curving = s.x.ddw[0] * row[0] + s.x.ddw[1] * row[1] + s.x.ddw[2] * row[2] + s.x.ddw[3] * row[3];
-        psiYY += s.y.ddw[b] * along;
-        psiXX += s.y.w[b] * curving;
-    }
+    const auto [psiXX, psiYY] = s.sums(s.x.ddw, s.y.w, s.x.w, s.y.ddw);
     return -s.flipX * s.flipY * (psiXX / (hx * hx) + psiYY / (hy * hy));
 }
 

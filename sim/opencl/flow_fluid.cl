@@ -75,18 +75,28 @@ VF_INLINE float streamBlend(float dt, float s)
         return s;                                                                              \
     }                                                                                          \
                                                                                                \
+    /* Two sums Σ_b wy[b] · Σ_a wx[a] · psi over the stencil's 4 × 4 corners, with the weights   \
+       (wxA, wyA) and (wxB, wyB), from one gather of the corners (StreamField::Stencil::sums). */ \
+    VF_INLINE void streamSums##S(__global const float *psi, int nx, StreamStencil##S s, const T *wxA, const T *wyA, \
+                                 const T *wxB, const T *wyB, T *a, T *b)                       \
+    {                                                                                          \
+        *a = 0.0f;                                                                             \
+        *b = 0.0f;                                                                             \
+        for (int r = 0; r < 4; ++r) {                                                          \
+            const I k = s.corner + r * streamStride(nx);                                       \
+            const T p0 = GATHER(psi, k), p1 = GATHER(psi, k + 1), p2 = GATHER(psi, k + 2),     \
+                    p3 = GATHER(psi, k + 3);                                                   \
+            *a += wyA[r] * (wxA[0] * p0 + wxA[1] * p1 + wxA[2] * p2 + wxA[3] * p3);            \
+            *b += wyB[r] * (wxB[0] * p0 + wxB[1] * p1 + wxB[2] * p2 + wxB[3] * p3);            \
+        }                                                                                      \
+    }                                                                                          \
+                                                                                               \
     /* StreamField::velocity of the lattice at psi. */                                         \
     VF_INLINE void streamVelocity##S(__global const float *psi, int nx, float hx, float hy,    \
                                      StreamStencil##S s, T *ux, T *uy)                         \
     {                                                                                          \
-        T dPsiDy = 0.0f, dPsiDx = 0.0f;                                                        \
-        for (int b = 0; b < 4; ++b) {                                                          \
-            const I k = s.corner + b * streamStride(nx);                                       \
-            const T p0 = GATHER(psi, k), p1 = GATHER(psi, k + 1), p2 = GATHER(psi, k + 2),     \
-                    p3 = GATHER(psi, k + 3);                                                   \
-            dPsiDy += s.dy[b] * (s.wx[0] * p0 + s.wx[1] * p1 + s.wx[2] * p2 + s.wx[3] * p3);   \
-            dPsiDx += s.wy[b] * (s.dx[0] * p0 + s.dx[1] * p1 + s.dx[2] * p2 + s.dx[3] * p3);   \
-        }                                                                                      \
+        T dPsiDy, dPsiDx;                                                                      \
+        streamSums##S(psi, nx, s, s.wx, s.dy, s.dx, s.wy, &dPsiDy, &dPsiDx);                   \
         *ux = s.flipX * dPsiDy / hy;                                                           \
         *uy = -s.flipY * dPsiDx / hx;                                                          \
     }                                                                                          \
@@ -95,14 +105,8 @@ VF_INLINE float streamBlend(float dt, float s)
     VF_INLINE T streamVorticity##S(__global const float *psi, int nx, float hx, float hy,      \
                                    StreamStencil##S s)                                         \
     {                                                                                          \
-        T psiXX = 0.0f, psiYY = 0.0f;                                                          \
-        for (int b = 0; b < 4; ++b) {                                                          \
-            const I k = s.corner + b * streamStride(nx);                                       \
-            const T p0 = GATHER(psi, k), p1 = GATHER(psi, k + 1), p2 = GATHER(psi, k + 2),     \
-                    p3 = GATHER(psi, k + 3);                                                   \
-            psiYY += s.ddy[b] * (s.wx[0] * p0 + s.wx[1] * p1 + s.wx[2] * p2 + s.wx[3] * p3);   \
-            psiXX += s.wy[b] * (s.ddx[0] * p0 + s.ddx[1] * p1 + s.ddx[2] * p2 + s.ddx[3] * p3); \
-        }                                                                                      \
+        T psiXX, psiYY;                                                                        \
+        streamSums##S(psi, nx, s, s.ddx, s.wy, s.wx, s.ddy, &psiXX, &psiYY);                   \
         return -s.flipX * s.flipY * (psiXX / (hx * hx) + psiYY / (hy * hy));                   \
     }                                                                                          \
                                                                                                \
