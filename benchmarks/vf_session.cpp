@@ -7,7 +7,7 @@
 //
 //   vf_session write NAME [--seed N] FILE.vfscene
 //   vf_session run NAME|SCENE [--seed N] [--steps N] --backend reference|opencl [--counts FILE]
-//                             [--check-topology K]
+//                             [--check-topology K] [--area-correction]
 //   vf_session naive NAME|SCENE [--seed N] --counts FILE
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
@@ -43,6 +43,7 @@ struct Arguments {
     std::string command, session, file, backend, counts;
     std::uint32_t seed = 1;
     std::int64_t steps = -1, checkTopology = 0;
+    bool areaCorrection = false;
 };
 
 Arguments parse(int argc, char** argv)
@@ -69,6 +70,8 @@ Arguments parse(int argc, char** argv)
             a.counts = value();
         else if (key == "--check-topology")
             a.checkTopology = std::stoll(value());
+        else if (key == "--area-correction")
+            a.areaCorrection = true;
         else if (a.command == "write" && a.file.empty())
             a.file = key;
         else
@@ -79,18 +82,17 @@ Arguments parse(int argc, char** argv)
 
 model::Scene sceneOf(const Arguments& a)
 {
-    if (std::optional<model::Scene> generated = sessions::byName(a.session, a.seed)) {
-        if (a.steps >= 0)
-            generated->time.steps = a.steps;
-        return *generated;
+    std::optional<model::Scene> scene = sessions::byName(a.session, a.seed);
+    if (!scene) {
+        const model::SceneReadResult read = model::readSceneFile(QString::fromStdString(a.session));
+        if (!read.ok())
+            fail(read.error.toStdString());
+        scene = read.scene;
     }
-    const model::SceneReadResult read = model::readSceneFile(QString::fromStdString(a.session));
-    if (!read.ok())
-        fail(read.error.toStdString());
-    model::Scene scene = read.scene;
     if (a.steps >= 0)
-        scene.time.steps = a.steps;
-    return scene;
+        scene->time.steps = a.steps;
+    scene->tracking.areaCorrection = scene->tracking.areaCorrection || a.areaCorrection;
+    return *scene;
 }
 
 long peakResidentBytes()
@@ -175,11 +177,13 @@ int run(const Arguments& a)
     std::ostringstream phases;
     for (std::size_t p = 0; p < sim::phaseCount; ++p)
         phases << (p ? ", " : "") << '"' << sim::phaseNames[p] << "\": " << simulation.phaseSeconds()[p];
-    std::printf("{\"session\": \"%s\", \"seed\": %u, \"backend\": \"%s\", \"steps\": %lld, \"substeps\": %lld, "
+    std::printf("{\"session\": \"%s\", \"seed\": %u, \"backend\": \"%s\", \"area_correction\": %s, "
+                "\"steps\": %lld, \"substeps\": %lld, "
                 "\"seconds\": %.4f, \"vertex_steps\": %lld, \"vertex_steps_per_second\": %.1f, \"peak_vertices\": %zu, "
                 "\"end_vertices\": %zu, \"peak_rss_bytes\": %ld, \"limit_reached\": %s, \"phase_seconds\": {%s}, "
                 "\"phases_total\": %.4f, \"first_crossing_step\": %lld, \"worst_area_error\": %.3g}\n",
-                a.session.c_str(), a.seed, simulation.backendName().c_str(), (long long)step, (long long)substeps,
+                a.session.c_str(), a.seed, simulation.backendName().c_str(),
+                simulation.settings().tracking.areaCorrection ? "true" : "false", (long long)step, (long long)substeps,
                 seconds, (long long)vertexSteps, double(vertexSteps) / seconds, peak, simulation.vertexCount(),
                 peakResidentBytes(), limit ? "true" : "false", phases.str().c_str(), phaseTotal,
                 (long long)firstCrossing, worstAreaError(simulation));
