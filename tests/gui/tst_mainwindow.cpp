@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include <QAction>
+#include <QHash>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -94,6 +95,8 @@ private slots:
         m_window->setReport([this](const QString&, const QString& text) { m_reports << text; });
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->activateWindow();  // shortcuts reach the active window only
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
         QVERIFY(m_window->openFile(m_scenePath));
         m_window->simulation().setPlaying(false);
         geometry(*m_window);
@@ -212,6 +215,38 @@ private slots:
         QCOMPARE(w.document().regions().size(), std::size_t(3));
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
         QVERIFY(geometry(w) == start);
+    }
+
+    void redoAnswersBothKeys()
+    {
+        MainWindow& w = *m_window;
+        test::child<QAction>(w, "toolDrop")->trigger();
+        QTest::mouseClick(&w.canvas(), Qt::LeftButton, {}, w.canvas().mapFromCanvas({0.7, 0.7}).toPoint());
+        QCOMPARE(w.document().regions().size(), std::size_t(3));
+        const QKeySequence redoKeys[] = {QKeySequence(Qt::CTRL | Qt::Key_Y), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)};
+        for (const QKeySequence& redo : redoKeys) {
+            QTest::keySequence(&w, QKeySequence::Undo);
+            QCOMPARE(w.document().regions().size(), std::size_t(2));
+            QTest::keySequence(&w, redo);
+            QVERIFY2(w.document().regions().size() == 3, qPrintable(redo.toString() + " redid nothing"));
+        }
+    }
+
+    // A key given to two actions, or twice to one, is ambiguous: Qt then runs neither.
+    void noShortcutIsAmbiguous()
+    {
+        QHash<QKeySequence, QString> owner;
+        for (const QAction* action : m_window->findChildren<QAction*>()) {
+            if (action->shortcutContext() == Qt::WidgetShortcut)
+                continue;
+            for (const QKeySequence& key : action->shortcuts()) {
+                const QString name = action->text().remove(QLatin1Char('&'));
+                QVERIFY2(!owner.contains(key), qPrintable(key.toString() + " is given to both " + owner.value(key) +
+                                                             " and " + name));
+                owner.insert(key, name);
+            }
+        }
+        QVERIFY(owner.size() > 10);
     }
 
     void recolourRenameAndReorderThroughTheViewAreUndoable()
