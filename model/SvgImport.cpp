@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <numbers>
 #include <optional>
 #include <utility>
@@ -372,7 +373,7 @@ private:
             return;
         }
         svg::transform(shape, context.toCanvas);
-        if (svg::vertexBound(shape, m_spacing) > static_cast<double>(limits::maxPolygonPoints))
+        if (!(svg::vertexBound(shape, m_spacing) <= static_cast<double>(limits::maxPolygonPoints)))  // NaN too
             fail(u"shape \"%1\" would need more than %2 vertices at spacing %3"_s.arg(name).arg(limits::maxPolygonPoints).arg(m_spacing));
 
         ImportedShape imported{name, *context.fill, {}};
@@ -432,6 +433,9 @@ SvgImport importSvg(const QByteArray& svg, const QString& sourceName, double can
     } catch (const ImportError& e) {
         result = {};
         result.error = sourceName + u": "_s + (e.where.isEmpty() ? QString() : e.where + u": "_s) + e.what;
+    } catch (const std::bad_alloc&) {
+        result = {};
+        result.error = sourceName + u": not enough memory to import it"_s;
     }
     return result;
 }

@@ -207,16 +207,21 @@ std::optional<Segment> arcSegment(Vec2 from, Vec2 radii, double rotationDegrees,
     // F.6.5.1: the midpoint difference in the ellipse's own axes.
     const Vec2 half = 0.5 * (from - to);
     const Vec2 p(c * half.x + s * half.y, -s * half.x + c * half.y);
-    // F.6.6.2: radii too small to reach are scaled up just enough.
-    const double lambda = p.x * p.x / (rx * rx) + p.y * p.y / (ry * ry);
-    if (lambda > 1.0) {
-        rx *= std::sqrt(lambda);
-        ry *= std::sqrt(lambda);
+    // F.6.6.2: radii too small to reach are scaled up just enough. `reach` is the square root of
+    // the spec's Λ; the scaled radii come from the radii's ratio, which stays finite where the
+    // reach itself overflows (radii far below the chord). Radii so large that the arc is within
+    // 1e-9 of its chord make a line.
+    const double reach = std::hypot(p.x / rx, p.y / ry);
+    if (reach < 1e-9)
+        return line(to);
+    if (reach > 1.0) {
+        const double aspect = rx / ry;
+        rx = std::hypot(p.x, p.y * aspect);
+        ry = std::hypot(p.x / aspect, p.y);
     }
-    // F.6.5.2-3: the centre.
-    const double numerator = rx * rx * ry * ry - rx * rx * p.y * p.y - ry * ry * p.x * p.x;
-    const double denominator = rx * rx * p.y * p.y + ry * ry * p.x * p.x;
-    const double root = (largeArc == sweep ? -1.0 : 1.0) * std::sqrt(std::max(0.0, numerator / denominator));
+    // F.6.5.2: the centre's distance, the spec's quotient divided through by rx²·ry² (= (1 − Λ)/Λ).
+    const double lambda = std::min(reach, 1.0) * std::min(reach, 1.0);
+    const double root = (largeArc == sweep ? -1.0 : 1.0) * std::sqrt((1.0 - lambda) / lambda);
     const Vec2 centerPrime(root * rx * p.y / ry, -root * ry * p.x / rx);
     const Vec2 center(c * centerPrime.x - s * centerPrime.y + 0.5 * (from.x + to.x),
                       s * centerPrime.x + c * centerPrime.y + 0.5 * (from.y + to.y));
@@ -231,7 +236,9 @@ std::optional<Segment> arcSegment(Vec2 from, Vec2 radii, double rotationDegrees,
         delta -= 2.0 * std::numbers::pi;
     Segment segment{Segment::Kind::Arc, {}, {}, to, {}};
     segment.arc = {center, rx * Vec2(c, s), ry * Vec2(-s, c), theta0, delta};
-    return segment;
+    const bool finite = std::isfinite(center.x) && std::isfinite(center.y) && std::isfinite(rx) && std::isfinite(ry) &&
+                        std::isfinite(theta0) && std::isfinite(delta);
+    return finite ? segment : line(to);
 }
 
 } // namespace vf::model::svg

@@ -400,6 +400,38 @@ private slots:
         verifyWellFormed(result.shapes.front(), 0.01);
     }
 
+    // Radii at the edges of double: far below the chord the arc is scaled up to reach (F.6.6);
+    // far above it, or scaled past what a double holds, it is a straight line (as zero radii are,
+    // F.6.2); an ellipse scaled past any size the canvas can hold is refused.
+    void arcRadiiAtTheEdgesOfDouble_data()
+    {
+        QTest::addColumn<QString>("radii");
+        QTest::addColumn<double>("bulge");  // of the arc above the edge; NaN: refused
+        QTest::newRow("1e-300") << u"1e-300 1e-300"_s << 0.1;
+        QTest::newRow("denormal") << u"4e-320 4e-320"_s << 0.1;
+        QTest::newRow("1e300") << u"1e300 1e300"_s << 0.0;
+        QTest::newRow("1e308 by 1e-308") << u"1e308 1e-308"_s << 0.0;
+        QTest::newRow("1e-300 by 1") << u"1e-300 1"_s << std::nan("");
+        QTest::newRow("1e-308 by 1e300") << u"1e-308 1e300"_s << 0.0;
+    }
+    void arcRadiiAtTheEdgesOfDouble()
+    {
+        QFETCH(QString, radii);
+        QFETCH(double, bulge);
+        // A square's top edge (40, 20)–(60, 20) replaced by an arc that bulges out of the square.
+        const SvgImport result = importBody(u"<path id='arc' d='M40 20 a"_s + radii + u" 0 0 1 20 0 V60 H40 Z'/>"_s);
+        if (std::isnan(bulge)) {
+            verifyOneLineError(result, u"shape \"arc\" would need more than"_s);
+            return;
+        }
+        QVERIFY2(result.ok(), qPrintable(result.error));
+        verifyWellFormed(result.shapes.front(), 0.01);
+        const Box box = bounds(result.shapes.front());
+        QVERIFY(std::abs(box.min.x - 0.4) < 1e-9 && std::abs(box.max.x - 0.6) < 1e-9);
+        QVERIFY(std::abs(box.max.y - 0.6) < 1e-9);
+        QVERIFY2(std::abs(box.min.y - (0.2 - bulge)) < kCurveBoundsTolerance, qPrintable(QString::number(box.min.y)));
+    }
+
     void crossingShapesRefused_data()
     {
         QTest::addColumn<QString>("body");
