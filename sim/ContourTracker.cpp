@@ -1,6 +1,7 @@
 #include "sim/ContourTracker.h"
 
 #include "sim/AreaCorrection.h"
+#include "sim/Crossings.h"
 #include "sim/SpacingField.h"
 
 #include <glm/geometric.hpp>
@@ -20,6 +21,14 @@ Vec2 rungeKutta4(const Flow& flow, Vec2 p, double t, double dt)
     const Vec2 k3 = flow.velocity(p + half * k2, t + half);
     const Vec2 k4 = flow.velocity(p + dt * k3, t + dt);
     return p + (dt / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+bool isThinTip(Vec2 before, Vec2 at, Vec2 after, double spacingBefore, double spacing, double spacingAfter)
+{
+    const Vec2 in = at - before, out = after - at;
+    const double longest = std::max({glm::length(in), glm::length(out), glm::distance(before, after)});
+    return glm::dot(in, out) < 0.0 && glm::distance(before, after) <= 0.5 * (spacingBefore + spacingAfter) &&
+           std::abs(in.x * out.y - in.y * out.x) <= tipWidth * spacing * longest;
 }
 
 double recentredFraction(double s, double toA, double toB, double needA, double needB)
@@ -56,6 +65,12 @@ public:
     int next(int v) const { return m_next[v]; }
     int before(int v) const { return m_before[v]; }
 
+    Vec2 at(int v) const { return m_position[v]; }
+    bool thinTip(int v) const
+    {
+        const int a = m_before[v], b = m_next[v];
+        return isThinTip(m_position[a], m_position[v], m_position[b], m_spacing[a], m_spacing[v], m_spacing[b]);
+    }
     double length(int a, int b) const { return glm::distance(m_position[a], m_position[b]); }
     // The spacing an edge must respect: the mean of its endpoints' d_i.
     double spacing(int a, int b) const { return 0.5 * (m_spacing[a] + m_spacing[b]); }
@@ -86,6 +101,26 @@ public:
         m_before[b] = m;
         ++m_alive;
         return m;
+    }
+
+    // Whether segment p–q, a new edge between vertices endP and endQ that replaces the edges at
+    // vertex v, would cross one of the ring's other edges within `reach` of v along the contour.
+    // Collapses and recentrings move a contour off its true curve, which a tiny fold of it can
+    // then cross; nothing farther along is near enough to matter (proximity refines there).
+    bool crossesNearby(Vec2 p, Vec2 q, int endP, int endQ, int v, int reach) const
+    {
+        int x = v;
+        for (int k = 0; k < reach; ++k)
+            x = m_before[x];
+        for (int k = 0; k < 2 * reach; ++k, x = m_next[x]) {
+            const int y = m_next[x];
+            if (x == v || y == v || x == endP || y == endP || x == endQ || y == endQ)
+                continue;
+            const Vec2 c = m_position[x], d = m_position[y];
+            if (orientation(p, q, c) * orientation(p, q, d) < 0 && orientation(c, d, p) * orientation(c, d, q) < 0)
+                return true;
+        }
+        return false;
     }
 
     void unlink(int v)
@@ -121,6 +156,8 @@ public:
             s = recentredFraction(s, toA, toB, needA, needB);
             x = place(s);
         }
+        if (crossesNearby(pa, x, a, v, v, foldReach) || crossesNearby(x, pb, v, b, v, foldReach))
+            return false;
         m_previous[v] = at(s);
         m_position[v] = x;
         m_spacing[v] = dv;
@@ -167,19 +204,29 @@ bool splitPass(Ring& ring, int start, const MotionMap& map, std::size_t budget, 
 
 // Removes a vertex of every edge shorter than half its spacing: the straighter endpoint, so corners
 // and curl tips survive. Where removal would leave an edge longer than its spacing, the vertex is
-// recentred instead. Returns the (possibly new) start vertex.
+// recentred instead. Removes thin needle tips (isThinTip). Returns the (possibly new) start vertex.
 int collapsePass(Ring& ring, int start, const MotionMap& map, bool& changed)
 {
     int v = start;
     for (int steps = ring.alive(); steps > 0 && ring.alive() > 3; --steps) {
         const int w = ring.next(v);
+        if (ring.thinTip(w)) {
+            // The new edge lies inside the needle, so it needs no fold check.
+            ring.unlink(w);
+            if (w == start)
+                start = ring.next(v);
+            changed = true;
+            continue;
+        }
         if (ring.length(v, w) >= 0.5 * ring.spacing(v, w)) {
             v = w;
             continue;
         }
         const int victim = ring.turning(v) < ring.turning(w) ? v : w;
         const int a = ring.before(victim), b = ring.next(victim);
-        if (ring.length(a, b) <= ring.spacing(a, b)) {
+        const bool removable = ring.length(a, b) <= ring.spacing(a, b) &&
+                               !ring.crossesNearby(ring.at(a), ring.at(b), a, b, victim, foldReach);
+        if (removable) {
             ring.unlink(victim);
             if (victim == start)
                 start = b;

@@ -68,6 +68,16 @@ private:
 // place that leaves both needs met (the middle when it can), in [0, 1].
 double recentredFraction(double s, double toA, double toB, double needA, double needB);
 inline constexpr int recentreCorrections = 3;  // at most (the device's kernels are built with it)
+// How far along the contour (in edges, each way) a collapse or a recentring checks that it folds
+// the contour over nothing (the device's kernels are built with it too).
+inline constexpr int foldReach = 8;
+// A needle tip: a vertex where the contour turns back on itself, whose neighbours are no farther
+// apart than their spacing allows, and whose triangle with them is at most tipWidth times the
+// vertex's spacing high over its longest side. Such a tip is removed (collapse): a needle thinner
+// than that is below any picture's resolution, and, left to thin on, its two sides would come
+// closer than the positions can tell apart (single precision on the device) and cross.
+inline constexpr double tipWidth = 0.01;
+bool isThinTip(Vec2 before, Vec2 at, Vec2 after, double spacingBefore, double spacing, double spacingAfter);
 
 // One classic fourth-order Runge–Kutta step through `flow` (eq. 1).
 Vec2 rungeKutta4(const Flow& flow, Vec2 p, double t, double dt);

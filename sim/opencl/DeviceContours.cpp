@@ -242,7 +242,8 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
     const std::string acc = fp64 ? "double" : "float";
     const std::string options =
         commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc + "2 -DVF_ACC4=" + acc + "4" +
-        " -DVF_RECENTRE_CORRECTIONS=" + std::to_string(recentreCorrections);
+        " -DVF_RECENTRE_CORRECTIONS=" + std::to_string(recentreCorrections) + " -DVF_FOLD_REACH=" + std::to_string(foldReach) +
+        " -DVF_TIP_WIDTH=" + std::to_string(tipWidth) + "f";
     const std::string source = joinedKernelSources({"flow.h.cl"}) + flowSource + "\n" +
                                joinedKernelSources({"workgroup.cl", "contours.cl", "contours_spacing.cl",
                                                     "contours_refine.cl", "contours_area.cl"});

@@ -164,6 +164,21 @@ VF_INLINE uint shortEdgeFlags(uint k, uint count)
     return FLAG_SHORT_EDGE(collapseColour(k, count)) | FLAG_SHORT_EDGE(collapseColour(next, count));
 }
 
+// ContourTracker's isThinTip: a needle tip that collapse removes.
+VF_INLINE bool isThinTip(float2 before, float2 at, float2 after, float spacingBefore, float spacing, float spacingAfter)
+{
+    const float2 in = at - before, out = after - at;
+    const float longest = fmax(fmax(length(in), length(out)), distance(before, after));
+    return dot(in, out) < 0.0f && distance(before, after) <= 0.5f * (spacingBefore + spacingAfter) &&
+           fabs(cross2(in, out)) <= VF_TIP_WIDTH * spacing * longest;
+}
+
+VF_INLINE bool thinTipAt(__global const float4 *motion, __global const float *spacing, uint v, uint first, uint count)
+{
+    const uint a = previousIn(v, first, count), b = nextIn(v, first, count);
+    return isThinTip(motion[a].xy, motion[v].xy, motion[b].xy, spacing[a], spacing[v], spacing[b]);
+}
+
 #define VERTEX_SET(prefix)                                                                     \
     __global float4 *prefix##Motion, __global float *prefix##Spacing, __global uint *prefix##Contour
 #define CONST_VERTEX_SET(prefix)                                                               \
@@ -197,14 +212,22 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
     if (get_local_id(0) == 0)
         groupFlags = 0;
     barrier(CLK_LOCAL_MEM_FENCE);
-    // A group of lanes on one contour, not at its end, whose edges are all well inside (d/2, d) is
-    // settled: every vertex stays one to one, with no flag. The margin keeps the vector lengths
-    // from deciding anything the one-vertex test below (distance()) could decide otherwise.
+    // A group of lanes on one contour, with a vertex either side of it there, whose edges are all
+    // well inside (d/2, d) and where the contour nowhere turns back (no needle tip) is settled:
+    // every vertex stays one to one, with no flag. The margin keeps the vector lengths from
+    // deciding anything the one-vertex test below (distance()) could decide otherwise.
     bool settled = false;
-    if (active && oneContour(inContour, first, first + VF_LANES, n)) {
-        const floatv length = edgesOnward(inMotion, first);
+    if (active && first > 0 && oneContour(inContour, first - 1, first + VF_LANES, n)) {
+        __global const float *positions = (__global const float *)inMotion;
+        floatv beforeX, beforeY, x, y, afterX, afterY;
+        consecutiveLanes(positions, 4, first - 1, &beforeX, &beforeY);
+        consecutiveLanes(positions, 4, first, &x, &y);
+        consecutiveLanes(positions, 4, first + 1, &afterX, &afterY);
+        const floatv outX = afterX - x, outY = afterY - y;
+        const floatv length = sqrt(outX * outX + outY * outY);
         const floatv spacing = 0.5f * (VF_VLOAD(0, inSpacing + first) + VF_VLOAD(0, inSpacing + first + 1));
-        settled = all((length < 0.99999f * spacing) & (length > 0.50001f * spacing));
+        const floatv forward = (x - beforeX) * outX + (y - beforeY) * outY;
+        settled = all((length < 0.99999f * spacing) & (length > 0.50001f * spacing) & (forward >= 0.0f));
     }
     uint produced[VF_LANES];
     bool attention[VF_LANES];
@@ -228,7 +251,10 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
         const bool shortEdge = length < 0.5f * spacing && count > 3;
         if (shortEdge)
             atomic_or(&groupFlags, shortEdgeFlags(i - from, count));
-        attention[k] = shortEdge || produced[k] > 1;
+        const bool tip = count > 3 && thinTipAt(inMotion, inSpacing, i, from, count);
+        if (tip)
+            atomic_or(&groupFlags, FLAG_SHORT_EDGE(collapseColour(i - from, count)));
+        attention[k] = shortEdge || tip || produced[k] > 1;
         if (attention[k])
             markTiles(marks, previousIn(i, from, count), i, j);
     }
@@ -347,12 +373,33 @@ VF_INLINE float turning(float2 before, float2 at, float2 after)
     return fabs(atan2(cross2(e0, e1), dot(e0, e1)));
 }
 
+// ContourTracker's crossesNearby: whether segment p–q, a new edge between vertices endP and endQ
+// that replaces the edges at vertex v, would cross one of the contour's other edges within
+// VF_FOLD_REACH of v. In float: sides that round to zero count as crossing, so an unsure case
+// keeps the contour as it is.
+VF_INLINE bool crossesNearby(__global const float4 *motion, float2 p, float2 q, uint endP, uint endQ, uint v,
+                             uint first, uint count)
+{
+    for (int k = -VF_FOLD_REACH; k < VF_FOLD_REACH; ++k) {
+        const uint x = stepAlong(v, k, first, count), y = nextIn(x, first, count);
+        if (x == v || y == v || x == endP || y == endP || x == endQ || y == endQ)
+            continue;
+        const float2 c = motion[x].xy, d = motion[y].xy;
+        if (cross2(q - p, c - p) * cross2(q - p, d - p) <= 0.0f && cross2(d - c, p - c) * cross2(d - c, q - c) <= 0.0f)
+            return true;
+    }
+    return false;
+}
+
 VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, __global const float4 *motion, __global const float *spacing,
                               uint v, uint first, uint count)
 {
     const uint a = previousIn(v, first, count), b = nextIn(v, first, count);
     const float2 pa = motion[a].xy, pv = motion[v].xy, pb = motion[b].xy;
     const float da = spacing[a], dv = spacing[v], db = spacing[b];
+    // The new edge of a needle tip lies inside the needle: no fold check.
+    if (isThinTip(pa, pv, pb, da, dv, db))
+        return ACTION_DELETE;
     const bool shortBefore = distance(pa, pv) < 0.25f * (da + dv);
     const bool shortAfter = distance(pv, pb) < 0.25f * (dv + db);
     if (!shortBefore && !shortAfter)
@@ -364,13 +411,17 @@ VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, __global const float4 *m
         (shortAfter && here < turning(pv, pb, motion[nextIn(b, first, count)].xy));
     if (!victim)
         return ACTION_KEEP;
-    if (distance(pa, pb) <= 0.5f * (da + db))
+    // Removed or recentred only where that folds the contour over none of its nearby edges.
+    if (distance(pa, pb) <= 0.5f * (da + db) && !crossesNearby(motion, pa, pb, a, b, v, first, count))
         return ACTION_DELETE;
     // Recentred only where that lengthens both edges enough; else the short edge stays (a lower bound
     // topology does not need) rather than v being moved to the same place round after round.
     bool settles;
-    recentred(FLOW_PASS, MOTION_PASS, motion[a], motion[b], da, db, &settles);
-    return settles ? ACTION_RECENTRE : ACTION_KEEP;
+    const float2 x = recentred(FLOW_PASS, MOTION_PASS, motion[a], motion[b], da, db, &settles).xy;
+    return settles && !crossesNearby(motion, pa, x, a, v, v, first, count) &&
+                   !crossesNearby(motion, x, pb, v, b, v, first, count)
+               ? ACTION_RECENTRE
+               : ACTION_KEEP;
 }
 
 VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *motion, __global const float *spacing,
@@ -408,10 +459,13 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *mot
         const bool shortEdge = count > 3 && length < 0.5f * spacingIJ;
         if (shortEdge)
             atomic_or(&groupFlags, shortEdgeFlags(k, count));
+        const bool tip = count > 3 && act == ACTION_KEEP && thinTipAt(motion, spacing, i, from, count);
+        if (tip)
+            atomic_or(&groupFlags, FLAG_SHORT_EDGE(collapseColour(k, count)));
         if (act == ACTION_RECENTRE)
             atomic_or(&groupFlags, FLAG_RECENTRED);
         // A long edge (left by a recentring of an earlier colour) is for the next split pass.
-        attention[lane] = shortEdge || length > spacingIJ || act != ACTION_KEEP;
+        attention[lane] = shortEdge || tip || length > spacingIJ || act != ACTION_KEEP;
         if (attention[lane])
             markTiles(marks, previousIn(i, from, count), i, j);
         action[i] = act;
