@@ -27,7 +27,7 @@ bool isThinTip(Vec2 before, Vec2 at, Vec2 after, double spacingBefore, double sp
 {
     const Vec2 in = at - before, out = after - at;
     const double longest = std::max({glm::length(in), glm::length(out), glm::distance(before, after)});
-    return glm::dot(in, out) < 0.0 && glm::distance(before, after) <= 0.5 * (spacingBefore + spacingAfter) &&
+    return glm::dot(in, out) <= 0.0 && glm::distance(before, after) <= 0.5 * (spacingBefore + spacingAfter) &&
            std::abs(in.x * out.y - in.y * out.x) <= tipWidth * spacing * longest;
 }
 
@@ -211,11 +211,12 @@ int collapsePass(Ring& ring, int start, const MotionMap& map, bool& changed)
     for (int steps = ring.alive(); steps > 0 && ring.alive() > 3; --steps) {
         const int w = ring.next(v);
         if (ring.thinTip(w)) {
-            // The new edge lies inside the needle, so it needs no fold check.
+            // The new edge lies inside the needle, so it needs no fold check. v may be the next tip.
             ring.unlink(w);
             if (w == start)
                 start = ring.next(v);
             changed = true;
+            v = ring.before(v);
             continue;
         }
         if (ring.length(v, w) >= 0.5 * ring.spacing(v, w)) {

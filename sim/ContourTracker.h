@@ -71,9 +71,10 @@ inline constexpr int recentreCorrections = 3;  // at most (the device's kernels 
 // How far along the contour (in edges, each way) a collapse or a recentring checks that it folds
 // the contour over nothing (the device's kernels are built with it too).
 inline constexpr int foldReach = 8;
-// A needle tip: a vertex where the contour turns back on itself, whose neighbours are no farther
-// apart than their spacing allows, and whose triangle with them is at most tipWidth times the
-// vertex's spacing high over its longest side. Such a tip is removed (collapse): a needle thinner
+// A needle tip: a vertex where the contour turns back on itself (by 90° or more, or onto a
+// neighbour it coincides with), whose neighbours are no farther apart than their spacing allows,
+// and whose triangle with them is at most tipWidth times the vertex's spacing high over its
+// longest side. Such a tip is removed (collapse): a needle thinner
 // than that is below any picture's resolution, and, left to thin on, its two sides would come
 // closer than the positions can tell apart (single precision on the device) and cross.
 inline constexpr double tipWidth = 0.01;

@@ -169,7 +169,7 @@ VF_INLINE bool isThinTip(float2 before, float2 at, float2 after, float spacingBe
 {
     const float2 in = at - before, out = after - at;
     const float longest = fmax(fmax(length(in), length(out)), distance(before, after));
-    return dot(in, out) < 0.0f && distance(before, after) <= 0.5f * (spacingBefore + spacingAfter) &&
+    return dot(in, out) <= 0.0f && distance(before, after) <= 0.5f * (spacingBefore + spacingAfter) &&
            fabs(cross2(in, out)) <= VF_TIP_WIDTH * spacing * longest;
 }
 
@@ -227,7 +227,7 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
         const floatv length = sqrt(outX * outX + outY * outY);
         const floatv spacing = 0.5f * (VF_VLOAD(0, inSpacing + first) + VF_VLOAD(0, inSpacing + first + 1));
         const floatv forward = (x - beforeX) * outX + (y - beforeY) * outY;
-        settled = all((length < 0.99999f * spacing) & (length > 0.50001f * spacing) & (forward >= 0.0f));
+        settled = all((length < 0.99999f * spacing) & (length > 0.50001f * spacing) & (forward > 0.0f));
     }
     uint produced[VF_LANES];
     bool attention[VF_LANES];

@@ -4,6 +4,7 @@
 
 #include "sim/AnalyticFlow.h"
 #include "sim/ContourTracker.h"
+#include "sim/Crossings.h"
 
 #include <glm/geometric.hpp>
 
@@ -92,6 +93,9 @@ private slots:
 
     void adaptiveSpacingSavesVertices_data();
     void adaptiveSpacingSavesVertices();
+
+    void thinNeedlesAreTrimmed_data();
+    void thinNeedlesAreTrimmed();
 };
 
 void TestTracking::rungeKuttaIsFourthOrder()
@@ -271,6 +275,45 @@ void TestTracking::adaptiveSpacingSavesVertices()
     QVERIFY2(adaptiveError <= uniformError, "adaptive spacing lost accuracy against uniform spacing");
     QVERIFY2(adaptive.size() <= 0.6 * uniform.size(),
              qPrintable(QStringLiteral("%1 adaptive vs %2 uniform vertices").arg(adaptive.size()).arg(uniform.size())));
+}
+
+void TestTracking::thinNeedlesAreTrimmed_data()
+{
+    test::addBackendColumn();
+    QTest::addColumn<double>("width");
+    QTest::addColumn<bool>("trimmed");
+    for (const QString& b : test::backendNames()) {
+        QTest::addRow("%s, 1e-9 wide", qPrintable(b)) << b << 1e-9 << true;  // float32: both sides on one line
+        QTest::addRow("%s, 2e-5 wide", qPrintable(b)) << b << 2e-5 << true;
+        QTest::addRow("%s, a spacing wide", qPrintable(b)) << b << 1.0 / 256 << false;
+    }
+}
+
+void TestTracking::thinNeedlesAreTrimmed()
+{
+    QFETCH(QString, backend);
+    VF_REQUIRE_BACKEND(backend);
+    QFETCH(double, width);
+    QFETCH(bool, trimmed);
+    // A square with a needle 0.15 long standing on its top edge, in still water: thinner than a
+    // hundredth of the spacing, collapse eats it from the tip down; wider, it stays.
+    const double spacing = 1.0 / 256;
+    auto simulation = test::makeBackend(backend, test::analyticSettings("0", "0", spacing, false));
+    const Polygon needle{{0.3, 0.3}, {0.6, 0.3}, {0.6, 0.6}, {0.45 + 0.5 * width, 0.6}, {0.45, 0.75},
+                         {0.45 - 0.5 * width, 0.6}, {0.3, 0.6}};
+    simulation->addRegion({needle});
+    for (int step = 0; step < 5; ++step)
+        simulation->step(0.01);
+    const Polygon contour = simulation->regions()[0][0];
+    double top = 0.0;
+    for (const Vec2& p : contour)
+        top = std::max(top, p.y);
+    QVERIFY2(sim::isSimple(contour), qPrintable(QStringLiteral("top %1, %2 vertices").arg(top).arg(contour.size())));
+    if (trimmed)
+        QVERIFY2(top < 0.6 + spacing, qPrintable(QStringLiteral("the needle reaches %1").arg(top)));
+    else
+        QVERIFY2(top > 0.75 - spacing, qPrintable(QStringLiteral("the needle was cut to %1").arg(top)));
+    QVERIFY(std::abs(sim::signedArea(contour) - 0.09) < 0.15 * width + 0.09 * test::positionEpsilon(backend));
 }
 
 QTEST_APPLESS_MAIN(TestTracking)
