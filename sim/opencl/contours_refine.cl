@@ -150,6 +150,17 @@ VF_INLINE uint splitEdge(FLOW_PARAMS, MOTION_ARGS, float4 a, float4 b, float spa
     }
 }
 
+// The length under which an edge from p with spacing d is short (collapse's lower bound): half
+// its spacing, less a few roundings of p's coordinates. Positions are floats: at a spacing of 6e-5
+// near x = 0.5 a vertex can only be placed to within a thousandth of the spacing, so an edge split
+// from one a hair over its spacing, or recentred onto its middle, would otherwise be short by a
+// rounding and be recentred to the same place pass after pass (most of the fine-detail session's
+// collapse work, before).
+VF_INLINE float shortLength(float2 p, float d)
+{
+    return 0.5f * d - 2.0f * FLT_EPSILON * fmax(fabs(p.x), fabs(p.y));
+}
+
 // The colour class of the k-th of `count` vertices in the collapse passes (below).
 VF_INLINE uint collapseColour(uint k, uint count)
 {
@@ -248,7 +259,7 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
                                      &capped);
         if (capped)
             atomic_or(&groupFlags, FLAG_SPLIT_CAPPED);
-        const bool shortEdge = length < 0.5f * spacing && count > 3;
+        const bool shortEdge = length < shortLength(a.xy, spacing) && count > 3;
         if (shortEdge)
             atomic_or(&groupFlags, shortEdgeFlags(i - from, count));
         const bool tip = count > 3 && thinTipAt(inMotion, inSpacing, i, from, count);
@@ -346,12 +357,12 @@ VF_INLINE float recentredFraction(float s, float toA, float toB, float needA, fl
     return clamp(s + (wanted - place), 0.0f, 1.0f);
 }
 
-// *settles: both of v's new edges are at least half their spacing, after at most
+// *settles: neither of v's new edges is short (shortLength), after at most
 // VF_RECENTRE_CORRECTIONS corrections (ContourTracker's recentreCorrections).
 VF_INLINE float4 recentred(FLOW_PARAMS, MOTION_ARGS, float4 a, float4 b, float spacingA, float spacingB, bool *settles)
 {
     const float dv = fmin(spacingA, spacingB);
-    const float needA = 0.25f * (spacingA + dv), needB = 0.25f * (spacingB + dv);
+    const float needA = shortLength(a.xy, 0.5f * (spacingA + dv)), needB = shortLength(b.xy, 0.5f * (spacingB + dv));
     float s = 0.5f;
     float2 start = mix(a.zw, b.zw, s);
     float2 x = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : mix(a.xy, b.xy, s);
@@ -384,8 +395,12 @@ VF_INLINE bool crossesNearby(__global const float4 *motion, float2 p, float2 q, 
         const uint x = stepAlong(v, k, first, count), y = nextIn(x, first, count);
         if (x == v || y == v || x == endP || y == endP || x == endQ || y == endQ)
             continue;
+        // Boxes that do not meet (exact in float) rule out what the signs, near zero along a
+        // straight stretch, cannot.
         const float2 c = motion[x].xy, d = motion[y].xy;
-        if (cross2(q - p, c - p) * cross2(q - p, d - p) <= 0.0f && cross2(d - c, p - c) * cross2(d - c, q - c) <= 0.0f)
+        const bool boxesMeet = all(fmax(c, d) >= fmin(p, q)) && all(fmax(p, q) >= fmin(c, d));
+        if (boxesMeet && cross2(q - p, c - p) * cross2(q - p, d - p) <= 0.0f &&
+            cross2(d - c, p - c) * cross2(d - c, q - c) <= 0.0f)
             return true;
     }
     return false;
@@ -400,8 +415,8 @@ VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, __global const float4 *m
     // The new edge of a needle tip lies inside the needle: no fold check.
     if (isThinTip(pa, pv, pb, da, dv, db))
         return ACTION_DELETE;
-    const bool shortBefore = distance(pa, pv) < 0.25f * (da + dv);
-    const bool shortAfter = distance(pv, pb) < 0.25f * (dv + db);
+    const bool shortBefore = distance(pa, pv) < shortLength(pv, 0.5f * (da + dv));
+    const bool shortAfter = distance(pv, pb) < shortLength(pv, 0.5f * (dv + db));
     if (!shortBefore && !shortAfter)
         return ACTION_KEEP;
     // The reference's victim of edge (p, q) is p when turning(p) < turning(q), else q.
@@ -456,7 +471,7 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *mot
         }
         const uint j = nextIn(i, from, count);
         const float length = distance(motion[i].xy, motion[j].xy), spacingIJ = 0.5f * (spacing[i] + spacing[j]);
-        const bool shortEdge = count > 3 && length < 0.5f * spacingIJ;
+        const bool shortEdge = count > 3 && length < shortLength(motion[i].xy, spacingIJ);
         if (shortEdge)
             atomic_or(&groupFlags, shortEdgeFlags(k, count));
         const bool tip = count > 3 && act == ACTION_KEEP && thinTipAt(motion, spacing, i, from, count);

@@ -8,6 +8,9 @@
 #include <QString>
 #include <QTest>
 
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <memory>
 
 namespace vf::test {
@@ -51,6 +54,14 @@ inline QString unavailable(const QString& name)
 inline double positionEpsilon(const QString& name)
 {
     return name == QLatin1String("opencl") ? 1e-5 : 1e-12;
+}
+
+// How far under half its spacing an edge may be: the device counts an edge short only below half
+// its spacing less a few roundings of its coordinates (shortLength in contours_refine.cl), the
+// reference exactly at half.
+inline double shortEdgeSlack(const QString& name, sim::Vec2 p)
+{
+    return name == QLatin1String("opencl") ? 2.0 * FLT_EPSILON * std::max(std::abs(p.x), std::abs(p.y)) : 0.0;
 }
 
 inline std::unique_ptr<sim::Simulation> makeBackend(const QString& name, const sim::SimulationSettings& settings)
