@@ -24,7 +24,7 @@ struct TrackingSettings {
     double vorticityScale = 20.0;                                 // |ω| is divided by this (1/s)
     double proximityLength() const { return maxSpacing; }        // distance is divided by this
     double proximityRadius() const { return 2.0 * proximityLength(); }  // search radius; c = 0.86 there
-    // The proximity grid's cells: a quarter of the radius, searched ring by ring outward.
+    // The proximity grid's cells: half the radius, searched ring by ring outward.
     double proximityCell() const { return proximityRadius() / 2.0; }
     double minSpacing() const { return maxSpacing / 16.0; }      // ε of eq. 3
     int smoothingRadius = 4;  // w of eq. 6, in vertices; σ = w / 2

@@ -391,7 +391,8 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
         buildGrid(g);
         launch(queue, nearestOtherPart, laneGroups(g.buckets()), radius, work, back.motion, cl_uint(g.buckets()),
                contourLength, back.contour);
-        launch(queue, nearestBeyond, vertices, g, radius, work, back.motion, n, contourLength, back.contour);
+        launch(queue, nearestBeyond, laneGroups(g.buckets()), g, radius, work, back.motion, cl_uint(g.buckets()),
+               contourLength, back.contour);
     }
     const PhaseClock::Scope timing(clock, Phase::Spacing);
     launch(queue, rawSpacing, laneGroups(vertices), flow, front.motion, front.contour, contourOffset, contourCount, n,

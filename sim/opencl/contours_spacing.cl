@@ -3,11 +3,12 @@
 //   contour with a Gaussian window (eq. 6), + ε, clamped to d_max.
 //
 // dist_i (eq. 7) is the distance to the nearest vertex of another part of any contour, found in a
-// uniform grid built by counting sort ([Grand 2007], paper §3.4). Cells are a quarter of the
-// search radius, and the search goes ring by ring (nearestOtherPart, then nearestBeyond): dense
-// ink finds its nearest other part in the first ring, where cells as wide as the radius held
-// hundreds of candidates. The buckets, a power of two that follows the vertex count, form a torus that the plane
-// wraps onto, so the grid needs no bounding box (no read-back) and stays small however far
+// uniform grid built by counting sort ([Grand 2007], paper §3.4). Cells are half the search
+// radius (wider where few vertices spread thin), and the search goes ring by ring
+// (nearestOtherPart, then nearestBeyond): dense ink finds its nearest other part in its own cell,
+// where cells as wide as the radius held hundreds of candidates. Both go two entries at a time,
+// 8 lanes wide. The buckets, a power of two that follows the vertex count, form a torus that the
+// plane wraps onto, so the grid needs no bounding box (no read-back) and stays small however far
 // contours spread, and neighbouring cells stay neighbours in memory (a CPU device lives on its
 // caches). At a million vertices and the default d_max the torus spans 8 canvas units; cells a
 // whole torus apart share buckets, which only adds candidates that the distance test rejects.
@@ -134,17 +135,17 @@ typedef struct {
 
 // The candidates of one run of entries [from, end) for both entries of `pair`, each lane taking
 // those from index `low` on: for each entry, the smallest squared distance among those of another
-// part, and each of them gets this distance as a candidate for its own minimum (atomic_min on the
-// bits of a non-negative float orders as the floats do, and gives the same result in any order).
-// Four candidates at a time, compared with both entries in one 8-wide step (one load and shuffle
-// of the candidates serves two entries), branch-free: most candidates are the vertex's own
-// neighbours along its contour, and a branch per candidate would mispredict. Lanes past the run
-// read the next entries (the array has slack at the end) and are masked out. best2 keeps a
-// minimum per lane, which the caller reduces once. Minima are plain comparisons: a NaN distance
+// part, and, when `symmetric`, each of them gets this distance as a candidate for its own minimum
+// (atomic_min on the bits of a non-negative float orders as the floats do, and gives the same
+// result in any order). Four candidates at a time, compared with both entries in one 8-wide step
+// (one load and shuffle of the candidates serves two entries), branch-free: most candidates are
+// the vertex's own neighbours along its contour, and a branch per candidate would mispredict.
+// Lanes past the run read the next entries (the array has slack at the end) and are masked out.
+// best2 keeps a minimum per lane, which the caller reduces once. Minima are plain comparisons: a NaN distance
 // fails `<` and leaves the minimum as it was, as fmin would (a step that moved a vertex to a
 // non-finite position is thrown away when its next refinement pass reads the status).
 VF_INLINE float8 nearestInRun(__global const uint4 *entries, uint from, uint end, uint8 low, const EntryPair *pair,
-                              float radius2, float8 best2, __global uint *gap2)
+                              float radius2, float8 best2, bool symmetric, __global uint *gap2)
 {
     for (uint e = from; e < end; e += 4) {
         const uint16 q = vload16(0, (__global const uint *)(entries + e));
@@ -157,7 +158,7 @@ VF_INLINE float8 nearestInRun(__global const uint4 *entries, uint from, uint end
                           (index < low);
         const float8 nearest = select(dist2, (float8)(radius2), skip);
         best2 = select(best2, nearest, nearest < best2);
-        if (any(nearest < (float8)(radius2))) {
+        if (symmetric && any(nearest < (float8)(radius2))) {
             float found[8];
             vstore8(nearest, 0, found);
             for (int k = 0; k < 8; ++k)
@@ -175,22 +176,30 @@ VF_INLINE float smallestOf(float4 best2)
     return pairs.y < pairs.x ? pairs.y : pairs.x;
 }
 
-// The search of the entries at a and, when it is before `to` (the end of their bucket), a + 1: the
-// rest of their bucket. Each entry's own minimum goes to gap2 once, at the end.
-VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, __global const float *contourLength,
-                             float radius2, __global uint *gap2)
+// Entries a and b (b = a when there is only one) as a pair.
+VF_INLINE EntryPair entryPair(__global const uint4 *entries, uint a, uint b, __global const float *contourLength)
 {
-    const bool withB = a + 1 < to;
-    const uint4 entryA = entries[a], entryB = entries[withB ? a + 1 : a];
+    const uint4 entryA = entries[a], entryB = entries[b];
     EntryPair pair;
     pair.x = (float8)((float4)(as_float(entryA.x)), (float4)(as_float(entryB.x)));
     pair.y = (float8)((float4)(as_float(entryA.y)), (float4)(as_float(entryB.y)));
     pair.arc = (float8)((float4)(as_float(entryA.z)), (float4)(as_float(entryB.z)));
     pair.length = (float8)((float4)(contourLength[entryA.w]), (float4)(contourLength[entryB.w]));
     pair.contour = (uint8)((uint4)(entryA.w), (uint4)(entryB.w));
+    return pair;
+}
+
+// The search of the entries at a and, when it is before `to` (the end of their bucket), a + 1: the
+// rest of their bucket. Each entry's own minimum goes to gap2 once, at the end.
+VF_INLINE void nearestOfPair(__global const uint4 *entries, uint a, uint to, __global const float *contourLength,
+                             float radius2, __global uint *gap2)
+{
+    const bool withB = a + 1 < to;
+    const EntryPair pair = entryPair(entries, a, withB ? a + 1 : a, contourLength);
     // Each takes the entries after it; B's lanes take none when it is missing.
     const uint8 afterSelf = (uint8)((uint4)(a + 1), (uint4)(withB ? a + 2 : ~0u));
-    const float8 best2 = nearestInRun(entries, a + 1, to, afterSelf, &pair, radius2, (float8)(radius2), gap2);
+    const float8 best2 =
+        nearestInRun(entries, a + 1, to, afterSelf, &pair, radius2, (float8)(radius2), true, gap2);
     const float nearestA = smallestOf(best2.lo), nearestB = smallestOf(best2.hi);
     if (nearestA < radius2)
         atomic_min(&gap2[a], as_uint(nearestA));
@@ -226,71 +235,93 @@ VF_KERNEL void nearestOtherPart(float radius, __global const uint *bucketStart, 
     }
 }
 
-// The nearest other part of entry `self` among entries [from, to) closer than best2 (squared).
-VF_INLINE float nearestIn(__global const uint4 *entries, uint from, uint to, uint4 self, float length, float best2)
-{
-    const float x = as_float(self.x), y = as_float(self.y), arc = as_float(self.z);
-    for (uint e = from; e < to; ++e) {
-        const uint4 q = entries[e];
-        const float dx = as_float(q.x) - x, dy = as_float(q.y) - y, dist2 = dx * dx + dy * dy;
-        const float along = fabs(as_float(q.z) - arc), way = fmin(along, length - along);
-        if (dist2 < best2 && !(q.w == self.w && way * way <= 4.0f * dist2))
-            best2 = dist2;
-    }
-    return best2;
-}
-
 // The cells [column, column + count) of a torus row, as the entries of one or (where the row wraps)
-// two runs of buckets, searched for entry `self`.
-VF_INLINE float nearestInCells(__global const uint *bucketStart, __global const uint4 *entries, uint rowBase,
-                               int column, int count, uint lastColumn, uint4 self, float length, float best2)
+// two runs of buckets, searched for both entries of `pair`.
+VF_INLINE float8 nearestInCells(__global const uint *bucketStart, __global const uint4 *entries, uint rowBase,
+                                int column, int count, uint lastColumn, uint8 low, const EntryPair *pair,
+                                float radius2, float8 best2)
 {
     const uint from = (uint)column & lastColumn, to = (uint)(column + count - 1) & lastColumn;
     if (from <= to)
-        return nearestIn(entries, bucketStart[rowBase + from], bucketStart[rowBase + to + 1], self, length, best2);
-    best2 = nearestIn(entries, bucketStart[rowBase + from], bucketStart[rowBase + lastColumn + 1], self, length, best2);
-    return nearestIn(entries, bucketStart[rowBase], bucketStart[rowBase + to + 1], self, length, best2);
+        return nearestInRun(entries, bucketStart[rowBase + from], bucketStart[rowBase + to + 1], low, pair, radius2,
+                            best2, false, 0);
+    best2 = nearestInRun(entries, bucketStart[rowBase + from], bucketStart[rowBase + lastColumn + 1], low, pair,
+                         radius2, best2, false, 0);
+    return nearestInRun(entries, bucketStart[rowBase], bucketStart[rowBase + to + 1], low, pair, radius2, best2, false,
+                        0);
 }
 
-// The rings of cells around every entry whose nearest other part in its own bucket, if any, lies
-// farther than the edge of its cell: ring k holds the cells k away (Chebyshev), and once rings
-// 0…k are searched every vertex nearer than k cells plus that edge distance has been seen, so the
-// search stops there when the nearest found is that near, and at the search radius at the latest.
-// Dense ink rarely gets here: its nearest other part lies within its own cell. One work-item per
-// entry; only its own minimum changes.
-VF_KERNEL void nearestBeyond(GRID_ARGS, float radius, __global const uint *bucketStart, __global const uint4 *entries,
-                             uint n, __global const float *contourLength, __global uint *gap2)
+// How far entry e lies inside its cell: every vertex nearer than that is in its own bucket.
+VF_INLINE float insideCell(GRID_ARGS, uint4 e)
 {
-    const uint e = get_global_id(0);
-    if (e >= n)
+    const float x = as_float(e.x), y = as_float(e.y);
+    const float inX = x - floor(x / cellSize) * cellSize, inY = y - floor(y / cellSize) * cellSize;
+    return fmax(0.0f, fmin(fmin(inX, inY), fmin(cellSize - inX, cellSize - inY)));
+}
+
+// The first entry of [from, to) whose nearest other part in its own bucket, if any, lies farther
+// than the edge of its cell, or `to`.
+VF_INLINE uint nextBeyond(GRID_ARGS, __global const uint4 *entries, uint from, uint to, __global const uint *gap2)
+{
+    for (; from < to; ++from) {
+        const float edge = insideCell(GRID_PASS, entries[from]);
+        if (as_float(gap2[from]) > edge * edge)
+            return from;
+    }
+    return to;
+}
+
+// The rings of cells around the entries of a bucket whose nearest other part in the bucket, if
+// any, lies farther than the edge of their cell: ring k holds the cells k away (Chebyshev), and
+// once rings 0…k are searched every vertex nearer than k − 1 cells plus that edge distance has
+// been seen, so an entry's search stops there when the nearest found is that near, and at the
+// search radius at the latest. Dense ink rarely gets here: its nearest other part lies within
+// its own cell. The entries that need it go two at a time, as in nearestOtherPart (four
+// candidates against both in one 8-wide step), the pair's rings going on while either needs them;
+// only their own minima change. A work-item takes VF_LANES buckets in turn.
+VF_KERNEL void nearestBeyond(GRID_ARGS, float radius, __global const uint *bucketStart, __global const uint4 *entries,
+                             uint buckets, __global const float *contourLength, __global uint *gap2)
+{
+    const uint first = VF_LANES * get_global_id(0);
+    if (first >= buckets)
         return;
-    const uint4 self = entries[e];
-    const float x = as_float(self.x), y = as_float(self.y);
-    const float cellX = clamp(floor(x / cellSize), -1e9f, 1e9f), cellY = clamp(floor(y / cellSize), -1e9f, 1e9f);
-    const float inX = x - cellX * cellSize, inY = y - cellY * cellSize;
-    const float edge = fmax(0.0f, fmin(fmin(inX, inY), fmin(cellSize - inX, cellSize - inY)));
-    float best2 = as_float(gap2[e]);
-    if (best2 <= edge * edge)
-        return;
-    const float length = contourLength[self.w];
-    const int column = (int)cellX, row = (int)cellY;
-    const uint lastColumn = (1u << columnBits) - 1u, lastRow = (1u << rowBits) - 1u;
+    const float radius2 = radius * radius;
     const int rings = (int)ceil(radius / cellSize);
-    for (int k = 1; k <= rings; ++k) {
-        const float seen = edge + (float)(k - 1) * cellSize;
-        if (best2 <= seen * seen)
-            break;
-        for (int dy = -k; dy <= k; ++dy) {
-            const uint rowBase = ((uint)(row + dy) & lastRow) << columnBits;
-            if (dy == -k || dy == k) {
-                best2 = nearestInCells(bucketStart, entries, rowBase, column - k, 2 * k + 1, lastColumn, self, length, best2);
-            } else {
-                best2 = nearestInCells(bucketStart, entries, rowBase, column - k, 1, lastColumn, self, length, best2);
-                best2 = nearestInCells(bucketStart, entries, rowBase, column + k, 1, lastColumn, self, length, best2);
+    const uint lastColumn = (1u << columnBits) - 1u, lastRow = (1u << rowBits) - 1u;
+    for (uint bucket = first; bucket < first + VF_LANES; ++bucket) {
+        const uint to = bucketStart[bucket + 1];
+        const int row = (int)(bucket >> columnBits), column = (int)(bucket & lastColumn);
+        for (uint a = nextBeyond(GRID_PASS, entries, bucketStart[bucket], to, gap2); a < to;) {
+            const uint b = nextBeyond(GRID_PASS, entries, a + 1, to, gap2);
+            const bool withB = b < to;
+            const EntryPair pair = entryPair(entries, a, withB ? b : a, contourLength);
+            const float2 edge = (float2)(insideCell(GRID_PASS, entries[a]), withB ? insideCell(GRID_PASS, entries[b]) : 0.0f);
+            const uint8 everyone = (uint8)((uint4)(0u), (uint4)(withB ? 0u : ~0u));
+            float8 best2 = (float8)((float4)(as_float(gap2[a])), (float4)(withB ? as_float(gap2[b]) : 0.0f));
+            for (int k = 1; k <= rings; ++k) {
+                const float2 seen = edge + (float)(k - 1) * cellSize;
+                const float2 nearest = (float2)(smallestOf(best2.lo), smallestOf(best2.hi));
+                if (all(nearest <= seen * seen))
+                    break;
+                for (int dy = -k; dy <= k; ++dy) {
+                    const uint rowBase = ((uint)(row + dy) & lastRow) << columnBits;
+                    if (dy == -k || dy == k) {
+                        best2 = nearestInCells(bucketStart, entries, rowBase, column - k, 2 * k + 1, lastColumn,
+                                               everyone, &pair, radius2, best2);
+                    } else {
+                        best2 = nearestInCells(bucketStart, entries, rowBase, column - k, 1, lastColumn, everyone,
+                                               &pair, radius2, best2);
+                        best2 = nearestInCells(bucketStart, entries, rowBase, column + k, 1, lastColumn, everyone,
+                                               &pair, radius2, best2);
+                    }
+                }
             }
+            gap2[a] = as_uint(smallestOf(best2.lo));
+            if (withB)
+                gap2[b] = as_uint(smallestOf(best2.hi));
+            a = withB ? nextBeyond(GRID_PASS, entries, b + 1, to, gap2) : to;
         }
     }
-    gap2[e] = as_uint(best2);
 }
 
 // Menger curvature: 1 / radius of the circle through the three points (SpacingField), in lanes.
