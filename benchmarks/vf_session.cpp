@@ -171,6 +171,8 @@ int run(const Arguments& a)
         if (a.checkTopology > 0 && (step + 1) % a.checkTopology == 0)
             firstCrossing = checkTopology(simulation, known, step + 1, firstCrossing);
     }
+    // The session's own peak, before the area check below copies the contours out.
+    const long peakRss = peakResidentBytes();
     double phaseTotal = 0.0;
     for (double s : simulation.phaseSeconds())
         phaseTotal += s;
@@ -185,7 +187,7 @@ int run(const Arguments& a)
                 a.session.c_str(), a.seed, simulation.backendName().c_str(),
                 simulation.settings().tracking.areaCorrection ? "true" : "false", (long long)step, (long long)substeps,
                 seconds, (long long)vertexSteps, double(vertexSteps) / seconds, peak, simulation.vertexCount(),
-                peakResidentBytes(), limit ? "true" : "false", phases.str().c_str(), phaseTotal,
+                peakRss, limit ? "true" : "false", phases.str().c_str(), phaseTotal,
                 (long long)firstCrossing, worstAreaError(simulation));
     return 0;
 }

@@ -3,6 +3,7 @@
 #include "sim/AreaCorrection.h"
 #include "sim/Crossings.h"
 #include "sim/SpacingField.h"
+#include "sim/TightGrowth.h"
 
 #include <glm/geometric.hpp>
 
@@ -169,6 +170,9 @@ public:
         c.positions.clear();
         c.previous.clear();
         c.spacing.clear();
+        reserveTight(c.positions, std::size_t(m_alive));
+        reserveTight(c.previous, std::size_t(m_alive));
+        reserveTight(c.spacing, std::size_t(m_alive));
         int v = start;
         do {
             c.positions.push_back(m_position[v]);

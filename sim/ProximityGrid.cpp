@@ -1,5 +1,7 @@
 #include "sim/ProximityGrid.h"
 
+#include "sim/TightGrowth.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -44,7 +46,7 @@ void ProximityGrid::build(const std::vector<Contour>& contours, double radius, d
     m_rows = int(extent.y / m_cell) + 1;
 
     // Counting sort: count per cell, exclusive prefix sum, scatter.
-    m_cellOfVertex.resize(total);
+    resizeTight(m_cellOfVertex, total);
     m_cellStart.assign(std::size_t(m_columns) * m_rows + 1, 0);
     std::size_t k = 0;
     int column = 0, row = 0;
@@ -55,13 +57,13 @@ void ProximityGrid::build(const std::vector<Contour>& contours, double radius, d
         m_cellStart[cell] += m_cellStart[cell - 1];
 
     m_fill.assign(m_cellStart.begin(), m_cellStart.end() - 1);
-    m_entries.resize(total);
+    resizeTight(m_entries, total);
     m_slot.resize(contours.size());
     m_contourLength.resize(contours.size());
     k = 0;
     for (std::uint32_t ci = 0; ci < contours.size(); ++ci) {
         const auto& positions = contours[ci].positions;
-        m_slot[ci].resize(positions.size());
+        resizeTight(m_slot[ci], positions.size());
         double arc = 0.0;
         for (std::size_t i = 0; i < positions.size(); ++i) {
             const std::uint32_t slot = m_fill[m_cellOfVertex[k++]]++;
