@@ -50,16 +50,22 @@ Geometry geometry(MainWindow& w)
 
 double largestMove(const Geometry& a, const Geometry& b)
 {
-    // Vertex counts change as contours refine; compare the centroids of each region's contours.
+    // Vertex counts change as contours refine, so compare the centroids of each region's area,
+    // which a vertex added on the curve or removed from it barely moves.
     double most = 0.0;
     for (std::size_t r = 0; r < std::min(a.size(), b.size()); ++r) {
         auto centroid = [](const std::vector<sim::Polygon>& contours) {
-            sim::Vec2 sum(0.0);
-            std::size_t n = 0;
-            for (const auto& c : contours)
-                for (const sim::Vec2& p : c)
-                    sum += p, ++n;
-            return n ? sum / double(n) : sum;
+            sim::Vec2 moment(0.0);
+            double area = 0.0;
+            for (const auto& c : contours) {
+                for (std::size_t i = 0; i < c.size(); ++i) {
+                    const sim::Vec2 p = c[i], q = c[(i + 1) % c.size()];
+                    const double cross = p.x * q.y - q.x * p.y;
+                    area += 0.5 * cross;
+                    moment += cross / 6.0 * (p + q);
+                }
+            }
+            return area != 0.0 ? moment / area : moment;
         };
         most = std::max(most, glm::length(centroid(a[r]) - centroid(b[r])));
     }
