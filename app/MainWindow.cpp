@@ -395,6 +395,7 @@ model::Drawing MainWindow::drawing() const
 void MainWindow::newDocument()
 {
     ++m_opened;
+    m_sceneName.clear();
     const QSettings settings;
     m_document.openScene(blankScene(), settings.value(backendKey, QStringLiteral("opencl")).toString(),
                          settings.value(deviceKey, -1).toInt());
@@ -413,6 +414,7 @@ bool MainWindow::load(const QString& path)
             return false;
         }
         m_document.openProject(read.project, m_document.settings().backend, m_document.settings().device);
+        m_sceneName.clear();
         m_document.setFilePath(path);
     } else {
         const model::SceneReadResult read = model::readSceneFile(path);
@@ -420,7 +422,9 @@ bool MainWindow::load(const QString& path)
             m_report(tr("Cannot open scene"), read.error);
             return false;
         }
+        // A scene is a starting point, not the document's file: Save asks where to put the project.
         m_document.openScene(read.scene, m_document.settings().backend, m_document.settings().device);
+        m_sceneName = QFileInfo(path).completeBaseName();
     }
     m_canvas->setBackground(m_document.scene().canvas.background);
     m_canvas->fitToWindow();
@@ -574,7 +578,8 @@ QString MainWindow::recentDirectory() const
 
 void MainWindow::updateTitle()
 {
-    const QString name = m_document.filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document.filePath()).fileName();
+    const QString file = m_document.filePath();
+    const QString name = !file.isEmpty() ? QFileInfo(file).fileName() : !m_sceneName.isEmpty() ? m_sceneName : tr("Untitled");
     setWindowTitle(QStringLiteral("%1[*] — Vector Fluid").arg(name));
     setWindowModified(m_document.isModified());
 }

@@ -289,6 +289,15 @@ private slots:
         QCOMPARE(w.document().regions()[1].name, QStringLiteral("slab"));
     }
 
+    // The title names the scene the document came from, then the project it was saved as.
+    void titleNamesTheDocument()
+    {
+        MainWindow& w = *m_window;
+        QVERIFY2(w.windowTitle().startsWith(QStringLiteral("small[*]")), qPrintable(w.windowTitle()));
+        QVERIFY(w.saveTo(m_dir.filePath(QStringLiteral("named.vfproj"))));
+        QVERIFY2(w.windowTitle().startsWith(QStringLiteral("named.vfproj[*]")), qPrintable(w.windowTitle()));
+    }
+
     void saveAndOpenRoundTripExactly()
     {
         MainWindow& w = *m_window;
