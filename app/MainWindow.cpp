@@ -1,3 +1,8 @@
+// The main window: its actions, docks and menus, and what each user action does to the document
+// (open, save, import, export, tools, modes). It is one file because every part reaches the same
+// document, canvas and simulation controller; the pieces with their own state already live apart
+// (Canvas, ExportDialog, SimulationPanel, Recovery, ClipboardExport). A later split would move the
+// file actions (open, save, recovery) into a class of their own.
 #include "app/MainWindow.h"
 
 #include "app/ClipboardExport.h"

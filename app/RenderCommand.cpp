@@ -1,4 +1,4 @@
-// `vectorfluid render SCENE ...`: run a scene headless and write files (DESIGN §3).
+// `vectorfluid render SCENE ...`: run a scene headless and write files (README, "The command line").
 #include "app/Backend.h"
 #include "app/Commands.h"
 #include "app/RenderOptions.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The live simulation, on its own thread (DESIGN §2): it owns the Simulation (and so its OpenCL
+// The live simulation, on its own thread (docs/ARCHITECTURE.md, "The app"): it owns the Simulation (and so its OpenCL
 // context, created on this thread), steps it while playing, runs the requests the GUI queues
 // between steps, and hands out immutable frames. Like Qt's mandelbrot example it coalesces: a
 // new frame is made only once the GUI has taken the previous one.

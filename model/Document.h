@@ -1,7 +1,7 @@
 #pragma once
 // The open piece of work: the scene it started from, the region looks, the engine settings and
 // the undo history, over a live simulation it reaches only through a SimulationPort. Lives on the
-// GUI thread; every user action is one command on its QUndoStack (DESIGN §2, undo semantics).
+// GUI thread; every user action is one command on its QUndoStack (docs/ARCHITECTURE.md, "The app: threads, documents and undo").
 #include "model/DocumentCommand.h"
 #include "model/Frame.h"
 #include "model/Project.h"

@@ -20,7 +20,7 @@ struct CommandRecord {
     RegionTable regionsBefore, regionsAfter;
     EngineSettings settingsBefore, settingsAfter;
     // Null for a command that leaves the simulation alone. `after` stays null until the command
-    // ends: when the next command starts or when it is undone (DESIGN: a command covers the flow
+    // ends: when the next command starts or when it is undone (a command covers the flow
     // it caused until the next one starts).
     StateSlotPtr before, after;
 

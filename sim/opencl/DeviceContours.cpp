@@ -1,3 +1,7 @@
+// The contour tracker of sim/ContourTracker.cpp on an OpenCL device: the host side of one step
+// (advect, spacing, proximity grid, refinement by stream compaction, area correction) and the
+// transfers in and out. One file because every phase works on the same device buffers, held in
+// Impl, and its launches must agree with them; the kernels are in contours*.cl, split by phase.
 #include "sim/opencl/DeviceContours.h"
 
 #include "sim/ContourTracker.h"

@@ -2,7 +2,8 @@
 // staying on the device between steps: the same MAC grid, free-slip closed walls, RK2-traced
 // semi-Lagrangian or MacCormack advection, implicit viscosity, stylus after viscosity, pressure
 // projection. The kernels are in fluid.cl, the MAC sampling they share with the contour kernels in
-// flow_fluid.cl.
+// flow_fluid.cl. One file because the step's launches, the solver's buffers and its level table
+// are one set of state that every launch sequence below reads.
 //
 // Linear solves: the preconditioned CG of sim/LinearSolve.cpp, stopping on the same max-norm
 // residual. Its preconditioner is the same multigrid V-cycle (coarsening, red-black Gauss-Seidel,

@@ -3,7 +3,8 @@
 // and the reasons behind the solver's shape: sim/opencl/DeviceFluid.cpp. Comes after flow.h.cl and
 // flow_fluid.cl (the stream function's layout). The host defines VF_LOCAL (work-group size of every kernel over
 // cells or faces), VF_GROUP (size of the single-work-group kernels), VF_SMOOTHING_SWEEPS and
-// VF_COARSEST_SWEEPS.
+// VF_COARSEST_SWEEPS. One file, because the step's kernels and the CG and multigrid kernels they
+// solve with share the level layout, coefficient planes and partial-sum slots defined here.
 //
 // Kernels over a lattice run 2D ranges of VF_LOCAL x 1 work-groups, rows of work-groups along the
 // lattice's rows, the first dimension rounded up (so they check i against the row length). That

@@ -1,6 +1,6 @@
 // Engine to file: scenes played by model::SceneRunner, exported by render::exportDrawing in polyline
-// mode, and the SVG read back must hold the engine's polygons (DESIGN §3: "the SVG's polygons read
-// back equal to the engine's within 1e-9"), named after the regions, with no crossings (§4).
+// mode, and the SVG read back must hold the engine's polygons (docs/ARCHITECTURE.md, "Files":
+// coordinates read back to the same double), named after the regions, with no crossings.
 #include "SvgReadBack.h"
 
 #include "model/SceneFile.h"
