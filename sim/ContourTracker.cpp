@@ -27,8 +27,10 @@ Vec2 rungeKutta4(const Flow& flow, Vec2 p, double t, double dt)
 bool isThinTip(Vec2 before, Vec2 at, Vec2 after, double spacingBefore, double spacing, double spacingAfter)
 {
     const Vec2 in = at - before, out = after - at;
+    if (glm::dot(in, out) > 0.0)  // most vertices: no lengths needed
+        return false;
     const double longest = std::max({glm::length(in), glm::length(out), glm::distance(before, after)});
-    return glm::dot(in, out) <= 0.0 && glm::distance(before, after) <= 0.5 * (spacingBefore + spacingAfter) &&
+    return glm::distance(before, after) <= 0.5 * (spacingBefore + spacingAfter) &&
            std::abs(in.x * out.y - in.y * out.x) <= tipWidth * spacing * longest;
 }
 
@@ -66,7 +68,7 @@ public:
     int next(int v) const { return m_next[v]; }
     int before(int v) const { return m_before[v]; }
 
-    Vec2 at(int v) const { return m_position[v]; }
+    Vec2 position(int v) const { return m_position[v]; }
     bool thinTip(int v) const
     {
         const int a = m_before[v], b = m_next[v];
@@ -230,7 +232,7 @@ int collapsePass(Ring& ring, int start, const MotionMap& map, bool& changed)
         const int victim = ring.turning(v) < ring.turning(w) ? v : w;
         const int a = ring.before(victim), b = ring.next(victim);
         const bool removable = ring.length(a, b) <= ring.spacing(a, b) &&
-                               !ring.crossesNearby(ring.at(a), ring.at(b), a, b, victim, foldReach);
+                               !ring.crossesNearby(ring.position(a), ring.position(b), a, b, victim, foldReach);
         if (removable) {
             ring.unlink(victim);
             if (victim == start)

@@ -179,8 +179,10 @@ VF_INLINE uint shortEdgeFlags(uint k, uint count)
 VF_INLINE bool isThinTip(float2 before, float2 at, float2 after, float spacingBefore, float spacing, float spacingAfter)
 {
     const float2 in = at - before, out = after - at;
+    if (dot(in, out) > 0.0f)  // most vertices: no lengths needed
+        return false;
     const float longest = fmax(fmax(length(in), length(out)), distance(before, after));
-    return dot(in, out) <= 0.0f && distance(before, after) <= 0.5f * (spacingBefore + spacingAfter) &&
+    return distance(before, after) <= 0.5f * (spacingBefore + spacingAfter) &&
            fabs(cross2(in, out)) <= VF_TIP_WIDTH * spacing * longest;
 }
 
