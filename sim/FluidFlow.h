@@ -8,6 +8,8 @@
 #include "sim/SimulationState.h"
 #include "sim/StreamFunction.h"
 
+#include <array>
+
 namespace vf::sim {
 
 class FluidFlow final : public Flow {
@@ -25,6 +27,9 @@ public:
     // the fluid at rest.
     FluidState state() const { return {m_solver.velocity(), m_solver.pressure()}; }
     void setState(const FluidState* state);
+    // The stream functions of the last step's start, middle and end (between steps, after
+    // setTime or setState, all three are the solver's).
+    std::array<const StreamField*, 3> streams() const { return {&m_start, &m_middle, &m_end}; }
     Vec2 velocity(Vec2 p, double t) const override;
     double vorticity(Vec2 p, double t) const override;
 

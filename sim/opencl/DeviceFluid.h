@@ -1,43 +1,29 @@
 #pragma once
 // The stable-fluids solver of sim/FluidSolver, on an OpenCL device in float32: the same grid,
 // walls, advection, viscosity, stylus and projection, with the velocity staying on the device.
-#include "sim/FluidSolver.h"
-#include "sim/opencl/Device.h"
-#include "sim/opencl/FlowBinding.h"
+#include "sim/opencl/Fluid.h"
 
 #include <memory>
 #include <vector>
 
 namespace vf::sim::opencl {
 
-class DeviceFluid {
+class DeviceFluid final : public Fluid {
 public:
     // Builds fluid.cl and allocates the grid. Throws DeviceError, std::invalid_argument for
     // settings FluidSolver refuses too.
     DeviceFluid(Device& device, const FluidSettings& settings);
-    ~DeviceFluid();
+    ~DeviceFluid() override;
 
-    const FluidSettings& settings() const;
-
-    // As FluidSolver::addStylus: applied during the next step().
-    void addStylus(Vec2 from, Vec2 to, double radius, double duration);
-
-    // One step. Keeps the stream functions of the step's start, middle and end, so binding() can
-    // blend across the step.
-    void step(double dt);
-
-    // The stream functions at the start, halfway and end of the last step (FlowBinding.h), with t0,
-    // t1 set from `t0` and `t1` (the caller's clock). Before the first step all are the current
-    // field's.
-    FlowBinding binding(double t0, double t1) const;
-
-    // Blocking readbacks, for tests and snapshots: never on the per-step path.
-    MacVelocity readVelocity() const;
-    void writeVelocity(const MacVelocity& velocity);  // clears the pressure warm start
-    // The pressure warm start, as FluidSolver::pressure(): write it after writeVelocity().
-    std::vector<double> readPressure() const;
-    void writePressure(const std::vector<double>& pressure);
-    double maxDivergence() const;
+    const FluidSettings& settings() const override;
+    void addStylus(Vec2 from, Vec2 to, double radius, double duration) override;
+    void step(double dt) override;
+    FlowBinding binding(double t0, double t1) const override;
+    MacVelocity readVelocity() const override;
+    void writeVelocity(const MacVelocity& velocity) override;
+    std::vector<double> readPressure() const override;
+    void writePressure(const std::vector<double>& pressure) override;
+    double maxDivergence() const override;
 
 private:
     struct Impl;

@@ -25,12 +25,13 @@ std::string flowSource(const SimulationSettings& s)
 
 } // namespace
 
-OpenClSimulation::OpenClSimulation(const SimulationSettings& settings, std::optional<int> deviceIndex)
+OpenClSimulation::OpenClSimulation(const SimulationSettings& settings, std::optional<int> deviceIndex,
+                                   FluidPlacement fluidPlacement)
     : m_settings((validateSettings(settings), settings))
     , m_device(Device::open(deviceIndex))
 {
     if (isFluid(settings)) {
-        m_fluid = std::make_unique<DeviceFluid>(m_device, settings.fluid);
+        m_fluid = makeFluid(m_device, settings.fluid, fluidPlacement);
     } else {
         m_placeholders.field = cl::Buffer(m_device.context(), CL_MEM_READ_ONLY, sizeof(float));
     }

@@ -1,11 +1,11 @@
 #pragma once
-// The OpenCL backend: the whole step on the device (DeviceFluid or an analytic flow compiled to
-// OpenCL C, and DeviceContours), with geometry read back only when asked for.
+// The OpenCL backend: the whole step on the device (the fluid, Fluid.h, or an analytic flow compiled
+// to OpenCL C, and DeviceContours), with geometry read back only when asked for.
 #include "sim/Simulation.h"
 #include "sim/Stylus.h"
 #include "sim/opencl/Device.h"
 #include "sim/opencl/DeviceContours.h"
-#include "sim/opencl/DeviceFluid.h"
+#include "sim/opencl/Fluid.h"
 
 #include <memory>
 #include <optional>
@@ -16,7 +16,8 @@ class OpenClSimulation final : public Simulation {
 public:
     // Throws DeviceError when no device can run it (no device, a failed kernel build, an
     // expression the translator refuses), std::invalid_argument for invalid settings.
-    OpenClSimulation(const SimulationSettings& settings, std::optional<int> deviceIndex);
+    OpenClSimulation(const SimulationSettings& settings, std::optional<int> deviceIndex,
+                     FluidPlacement fluidPlacement = FluidPlacement::ByDevice);
     ~OpenClSimulation() override;
 
     std::string backendName() const override { return "opencl"; }
@@ -48,7 +49,7 @@ private:
 
     SimulationSettings m_settings;
     Device m_device;
-    std::unique_ptr<DeviceFluid> m_fluid;  // null for an analytic flow
+    std::unique_ptr<Fluid> m_fluid;         // null for an analytic flow
     FlowBinding m_placeholders;            // the buffers an analytic flow ignores
     std::unique_ptr<DeviceContours> m_contours;
     std::vector<StylusSegment> m_pendingStylus;

@@ -1,10 +1,12 @@
 // Tests of the OpenCL fluid solver (sim/opencl/DeviceFluid) against the reference FluidSolver:
 // agreement after strokes, projection, walls, viscosity, the pen, determinism and snapshots, the
-// fields binding() hands to the contour kernels and their sampling in flow_fluid.cl, bad input.
+// fields binding() hands to the contour kernels (from it and from HostFluid) and their sampling in
+// flow_fluid.cl, contours moved by either fluid, bad input.
 // Skipped, with the reason, when no OpenCL device can be opened.
 #include "sim/FluidSolver.h"
 #include "sim/StreamFunction.h"
 #include "sim/opencl/DeviceFluid.h"
+#include "sim/opencl/OpenClSimulation.h"
 #include "sim/opencl/KernelSources.h"
 #include "sim/opencl/Launch.h"
 
@@ -26,9 +28,11 @@ using vf::sim::opencl::Device;
 using vf::sim::opencl::DeviceError;
 using vf::sim::opencl::DeviceFluid;
 using vf::sim::opencl::FlowBinding;
+using vf::sim::opencl::FluidPlacement;
 
 Q_DECLARE_METATYPE(vf::sim::Advection)
 Q_DECLARE_METATYPE(vf::sim::FluidSettings)
+Q_DECLARE_METATYPE(vf::sim::opencl::FluidPlacement)
 
 namespace {
 
@@ -189,7 +193,9 @@ private slots:
     void highViscosityStopsRightAfterStroke();
     void degenerateStrokesDoNothing();
     void deterministicAndSnapshotsReplay();
+    void bindingHoldsStepStartAndEnd_data();
     void bindingHoldsStepStartAndEnd();
+    void contoursMoveAlikeWithEitherFluid();
     void flowSamplingMatchesReference();
     void laneSamplingMatchesOnePoint();
     void badInputThrows();
@@ -412,24 +418,32 @@ void TestDeviceFluid::deterministicAndSnapshotsReplay()
     QVERIFY(!isZero(replayed.u));
 }
 
+void TestDeviceFluid::bindingHoldsStepStartAndEnd_data()
+{
+    QTest::addColumn<FluidPlacement>("placement");
+    QTest::newRow("DeviceFluid") << FluidPlacement::Device;
+    QTest::newRow("HostFluid") << FluidPlacement::Host;
+}
+
 // The contour kernels get the stream functions of the step's start, of its middle and of its end
-// (sim/StreamFunction), in float32.
+// (sim/StreamFunction), in float32, wherever the fluid is solved.
 void TestDeviceFluid::bindingHoldsStepStartAndEnd()
 {
+    QFETCH(FluidPlacement, placement);
     const FluidSettings s = settings(24, 16, 1.5, 1.0, 5e-4);
-    DeviceFluid fluid(*m_device, s);
-    fluid.writeVelocity(waves(s, 0.3));
-    const StreamField before = StreamField::of(fluid.readVelocity());
+    const std::unique_ptr<opencl::Fluid> fluid = opencl::makeFluid(*m_device, s, placement);
+    fluid->writeVelocity(waves(s, 0.3));
+    const StreamField before = StreamField::of(fluid->readVelocity());
     const std::size_t corners = before.psi.size();
-    FlowBinding b = fluid.binding(0.0, 0.0);
+    FlowBinding b = fluid->binding(0.0, 0.0);
     std::vector<double> stream = readBuffer(*m_device, b.field, 3 * corners);
     for (int lattice = 0; lattice < 3; ++lattice)
         QVERIFY(streamDifference(stream, lattice, before) < 1e-6);
 
-    stir(fluid, 0);
-    fluid.step(kDt);
-    b = fluid.binding(1.0, 1.0 + kDt);
-    const StreamField after = StreamField::of(fluid.readVelocity());
+    stir(*fluid, 0);
+    fluid->step(kDt);
+    b = fluid->binding(1.0, 1.0 + kDt);
+    const StreamField after = StreamField::of(fluid->readVelocity());
     stream = readBuffer(*m_device, b.field, 3 * corners);
     QVERIFY(streamDifference(stream, 2, before) > 1e-3);  // the step changed the field
     QVERIFY(streamDifference(stream, 0, before) < 1e-6);
@@ -440,6 +454,44 @@ void TestDeviceFluid::bindingHoldsStepStartAndEnd()
     QCOMPARE(b.hx, float(s.width / s.nx));
     QCOMPARE(b.t0, 1.0);
     QCOMPARE(b.t1, 1.0 + kDt);
+}
+
+// The OpenCL backend with the fluid on the device (float32) and on the host (double) moves the
+// same ink alike: a row of discs stirred by the pen, then left to flow. The two fluids differ by
+// float32 rounding (agreesWithReference), so the contours should agree far within the spacing.
+void TestDeviceFluid::contoursMoveAlikeWithEitherFluid()
+{
+    SimulationSettings s;
+    s.tracking.maxSpacing = 0.004;
+    std::vector<std::vector<Contour>> results;
+    for (const FluidPlacement placement : {FluidPlacement::Device, FluidPlacement::Host}) {
+        opencl::OpenClSimulation simulation(s, std::nullopt, placement);
+        for (int k = 0; k < 5; ++k)
+            simulation.addRegion({circle({0.2 + 0.15 * k, 0.5}, 0.06, s.tracking.maxSpacing)});
+        for (int step = 0; step < 60; ++step) {
+            if (step < 20)
+                simulation.stylus({0.1 + 0.04 * step, 0.45}, {0.14 + 0.04 * step, 0.55}, 0.08, kDt);
+            simulation.step(kDt);
+        }
+        results.push_back(simulation.contours());
+    }
+    const std::vector<Contour>& device = results[0];
+    const std::vector<Contour>& host = results[1];
+    QCOMPARE(device.size(), host.size());
+    double moved = 0.0, apart = 0.0;
+    std::size_t deviceVertices = 0, hostVertices = 0;
+    for (std::size_t c = 0; c < device.size(); ++c) {
+        const Polygon start = circle({0.2 + 0.15 * double(c), 0.5}, 0.06, s.tracking.maxSpacing);
+        moved = std::max(moved, hausdorffDistance(start, host[c].positions));
+        apart = std::max(apart, hausdorffDistance(device[c].positions, host[c].positions));
+        deviceVertices += device[c].positions.size();
+        hostVertices += host[c].positions.size();
+    }
+    // Refinement decides near its thresholds: single contours differ by a few vertices either way.
+    QVERIFY2(std::abs(double(deviceVertices) / double(hostVertices) - 1.0) < 0.02,
+             qPrintable(QString("%1 and %2 vertices").arg(deviceVertices).arg(hostVertices)));
+    QVERIFY2(moved > 0.02, qPrintable(QString("the pen moved the ink only %1").arg(moved)));
+    QVERIFY2(apart < 1e-4, qPrintable(QString("the two fluids moved the ink %1 apart").arg(apart)));
 }
 
 // flowVelocity and flowVorticity of flow_fluid.cl against StreamField::velocity and ::vorticity of
