@@ -46,28 +46,26 @@ void ProximityGrid::build(const std::vector<Contour>& contours, double radius, d
     m_rows = int(extent.y / m_cell) + 1;
 
     // Counting sort: count per cell, exclusive prefix sum, scatter.
-    resizeTight(m_cellOfVertex, total);
     m_cellStart.assign(std::size_t(m_columns) * m_rows + 1, 0);
-    std::size_t k = 0;
     int column = 0, row = 0;
     for (const Contour& c : contours)
         for (const Vec2& p : c.positions)
-            ++m_cellStart[(m_cellOfVertex[k++] = cellOf(p, column, row)) + 1];
+            ++m_cellStart[cellOf(p, column, row) + 1];
     for (std::size_t cell = 1; cell < m_cellStart.size(); ++cell)
         m_cellStart[cell] += m_cellStart[cell - 1];
 
     m_fill.assign(m_cellStart.begin(), m_cellStart.end() - 1);
-    resizeTight(m_entries, total);
+    resizeDiscarding(m_entries, total);
     m_slot.resize(contours.size());
     m_contourLength.resize(contours.size());
-    k = 0;
     for (std::uint32_t ci = 0; ci < contours.size(); ++ci) {
         const auto& positions = contours[ci].positions;
-        resizeTight(m_slot[ci], positions.size());
+        resizeDiscarding(m_slot[ci], positions.size());
         double arc = 0.0;
         for (std::size_t i = 0; i < positions.size(); ++i) {
-            const std::uint32_t slot = m_fill[m_cellOfVertex[k++]]++;
-            m_entries[slot] = {positions[i], arc, ci};
+            // The cell again rather than kept from the count: 4 bytes a vertex less.
+            const std::uint32_t slot = m_fill[cellOf(positions[i], column, row)]++;
+            m_entries[slot] = {positions[i], float(arc), ci};
             m_slot[ci][i] = slot;
             arc += glm::distance(positions[i], positions[(i + 1) % positions.size()]);
         }

@@ -24,7 +24,8 @@ public:
 private:
     struct Entry {
         Vec2 position;
-        double arc;  // arc length from the contour's first vertex
+        float arc;  // arc length from the contour's first vertex (as the device keeps it: only "more
+                    // than twice the straight distance" is asked of it)
         std::uint32_t contour;
     };
     int cellOf(Vec2 p, int& column, int& row) const;
@@ -37,7 +38,7 @@ private:
     std::vector<Entry> m_entries;                   // sorted by cell
     std::vector<std::vector<std::uint32_t>> m_slot; // [contour][vertex] -> index into m_entries
     std::vector<double> m_contourLength;
-    std::vector<std::uint32_t> m_cellOfVertex, m_fill;  // build scratch, kept to avoid reallocation
+    std::vector<std::uint32_t> m_fill;  // build scratch, kept to avoid reallocation
 };
 
 } // namespace vf::sim

@@ -21,4 +21,16 @@ void resizeTight(std::vector<T>& v, std::size_t n)
     v.resize(n);
 }
 
+// For an array rebuilt from scratch each time: past its capacity the old storage is freed before
+// the new one is allocated, so the two are never resident together (a reserve() would copy).
+template <typename T>
+void resizeDiscarding(std::vector<T>& v, std::size_t n)
+{
+    if (n > v.capacity()) {
+        std::vector<T>().swap(v);
+        v.reserve(n + n / 8);
+    }
+    v.resize(n);
+}
+
 } // namespace vf::sim
