@@ -30,7 +30,6 @@
 #include <QStatusBar>
 #include <QThreadPool>
 #include <QToolBar>
-#include <QVBoxLayout>
 
 namespace vf::app {
 
@@ -131,6 +130,9 @@ void MainWindow::createActions()
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
+    edit->addAction(m_regionsDock->duplicateAction());
+    edit->addAction(m_regionsDock->deleteAction());
+    edit->addSeparator();
     edit->addAction(tr("History &Memory…"), this, [this] {
         bool ok = false;
         const int mb = QInputDialog::getInt(this, tr("History memory"),
@@ -156,6 +158,7 @@ void MainWindow::createActions()
         Tool tool;
         const char* name;
     } toolList[] = {
+        {tr("Se&lect"), QKeySequence(Qt::Key_V), Tool::Select, "toolSelect"},
         {tr("&Drop"), QKeySequence(Qt::Key_D), Tool::Drop, "toolDrop"},
         {tr("&Stylus"), QKeySequence(Qt::Key_S), Tool::Stylus, "toolStylus"},
         {tr("&Text"), QKeySequence(Qt::Key_T), Tool::Text, "toolText"},
@@ -172,7 +175,7 @@ void MainWindow::createActions()
         tools->addAction(a);
         toolMenu->addAction(a);
     }
-    toolGroup->actions().front()->setChecked(true);
+    findChild<QAction*>(QStringLiteral("toolDrop"))->setChecked(true);
     m_canvas->setTool(Tool::Drop);
 
     auto* colorButton = new QPushButton(tr("Ink"), this);
@@ -268,38 +271,8 @@ void MainWindow::createActions()
 
 void MainWindow::createDocks()
 {
-    // Regions: the topmost first; name editable in place, colour by double-click on the swatch
-    // (or the Colour button), visibility by the check box, order by drag or the buttons.
-    auto* regions = new QDockWidget(tr("Regions"), this);
-    regions->setObjectName(QStringLiteral("regionsDock"));
-    auto* regionsContent = new QWidget(regions);
-    auto* layout = new QVBoxLayout(regionsContent);
-    m_regionView = new QListView(regionsContent);
-    m_regionView->setObjectName(QStringLiteral("regionView"));
-    m_regionView->setModel(&m_regionModel);
-    m_regionView->setDragDropMode(QAbstractItemView::InternalMove);
-    m_regionView->setDefaultDropAction(Qt::MoveAction);
-    m_regionView->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked);
-    layout->addWidget(m_regionView);
-    auto* buttons = new QHBoxLayout;
-    const struct {
-        QString text;
-        const char* name;
-        std::function<void()> action;
-    } buttonList[] = {
-        {tr("Colour…"), "recolour", [this] { recolourSelected(); }},
-        {tr("Raise"), "raise", [this] { raiseSelected(1); }},
-        {tr("Lower"), "lower", [this] { raiseSelected(-1); }},
-    };
-    for (const auto& b : buttonList) {
-        auto* button = new QPushButton(b.text, regionsContent);
-        button->setObjectName(QLatin1String(b.name));
-        connect(button, &QPushButton::clicked, this, b.action);
-        buttons->addWidget(button);
-    }
-    layout->addLayout(buttons);
-    regions->setWidget(regionsContent);
-    addDockWidget(Qt::RightDockWidgetArea, regions);
+    m_regionsDock = new RegionsDock(m_document, m_regionModel, m_simulation, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_regionsDock);
 
     auto* history = new QDockWidget(tr("History"), this);
     history->setObjectName(QStringLiteral("historyDock"));
@@ -374,6 +347,9 @@ void MainWindow::connectDocument()
         m_document.stroke(toVec(from), toVec(to), m_stylusRadius, seconds);
     });
     connect(m_canvas, &Canvas::textRequested, this, &MainWindow::askText);
+    connect(m_canvas, &Canvas::regionClicked, m_regionsDock, &RegionsDock::selectRegion);
+    connect(m_regionsDock, &RegionsDock::selectedRegionChanged, m_canvas, &Canvas::setSelectedRegion);
+    connect(m_regionsDock, &RegionsDock::refused, this, [this](const QString& reason) { statusBar()->showMessage(reason, 5000); });
 }
 
 // ---- Frames -------------------------------------------------------------------------------------------
@@ -675,34 +651,6 @@ void MainWindow::setInkColor(const QColor& color)
         swatch.fill(color);
         button->setIcon(QIcon(swatch));
     }
-}
-
-void MainWindow::recolourSelected()
-{
-    const QModelIndex index = m_regionView->currentIndex();
-    if (!index.isValid())
-        return;
-    const QColor current = index.data(model::RegionListModel::ColorRole).value<QColor>();
-    const QColor chosen = QColorDialog::getColor(current, this, tr("Region colour"), QColorDialog::ShowAlphaChannel);
-    if (chosen.isValid())
-        m_regionModel.setData(index, chosen, model::RegionListModel::ColorRole);
-}
-
-void MainWindow::raiseSelected(int by)
-{
-    // Up the list is up the paint order.
-    const QModelIndex index = m_regionView->currentIndex();
-    if (!index.isValid())
-        return;
-    const int row = index.row();
-    const int target = row - by;
-    if (target < 0 || target >= m_regionModel.rowCount())
-        return;
-    const QString name = index.data().toString();
-    m_regionModel.moveRows({}, row, 1, {}, by > 0 ? target : target + 1);
-    const QModelIndexList moved = m_regionModel.match(m_regionModel.index(0), Qt::DisplayRole, name, 1, Qt::MatchExactly);
-    if (!moved.isEmpty())
-        m_regionView->setCurrentIndex(moved.front());
 }
 
 } // namespace vf::app

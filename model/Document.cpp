@@ -403,6 +403,41 @@ bool Document::moveRegion(int from, int to)
     return true;
 }
 
+bool Document::deleteRegion(int index)
+{
+    if (index < 0 || index >= int(m_regions.size()) || !canAddRegions())
+        return false;
+    const RegionLook gone = m_regions[std::size_t(index)];
+    pushSimulationCommand(tr("Delete %1").arg(gone.name), [&] {
+        m_port.removeRegion(gone.simIndex);
+        m_restoreSerial = m_port.requestCount();  // older frames number the regions as before
+        RegionTable table = m_regions;
+        table.erase(table.begin() + index);
+        for (RegionLook& look : table)
+            if (look.simIndex > gone.simIndex)
+                --look.simIndex;
+        replaceRegions(table);
+    });
+    return true;
+}
+
+bool Document::duplicateRegion(int index, const std::vector<sim::Polygon>& contours)
+{
+    if (index < 0 || index >= int(m_regions.size()) || contours.empty() || !canAddRegions())
+        return false;
+    const RegionLook original = m_regions[std::size_t(index)];
+    pushSimulationCommand(tr("Duplicate %1").arg(original.name), [&] {
+        m_port.addRegion(contours);
+        RegionTable table = m_regions;
+        RegionLook copy = original;
+        copy.name = unusedName(tr("%1 copy").arg(original.name));
+        copy.simIndex = int(table.size());
+        table.insert(table.begin() + index + 1, copy);
+        replaceRegions(table);
+    });
+    return true;
+}
+
 // ---- History memory ------------------------------------------------------------------------------
 
 std::size_t Document::historyBytes(int first) const

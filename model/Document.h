@@ -89,6 +89,12 @@ public:
     bool setRegionName(int index, const QString& name);
     bool setRegionVisible(int index, bool visible);
     bool moveRegion(int from, int to);
+    // Takes the region and its ink out of the simulation (the regions above it in the simulation
+    // move down one index). Refused, like adding, while the scene's own drops are still to land.
+    bool deleteRegion(int index);
+    // A new region of `contours` (the region's ink as it is, moved where the copy should be) with
+    // the region's looks and a name of its own, just above it.
+    bool duplicateRegion(int index, const std::vector<sim::Polygon>& contours);
 
     // ---- From the worker. --------------------------------------------------------------------
     // Regions the scene's script has landed since get their looks here.

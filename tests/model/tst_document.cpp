@@ -3,6 +3,7 @@
 // own drops, the history budget and the Regions model. The simulation here is a stand-in that
 // runs requests at once and whose state is a few numbers, so every request can be checked.
 #include "model/Document.h"
+#include "model/RegionRemoval.h"
 #include "model/RegionListModel.h"
 
 #include <QAbstractItemModelTester>
@@ -50,6 +51,7 @@ public:
         state = *from->state();
     }
     void addRegion(const std::vector<sim::Polygon>&) override { ++requests, addContour(); }
+    void removeRegion(int region) override { ++requests, state = withoutRegion(state, region); }
     void drop(sim::Vec2, double) override { ++requests, addContour(); }
     void stylus(sim::Vec2, sim::Vec2, double, double seconds) override { ++requests, state.time += seconds; }
     std::uint64_t requestCount() const override { return requests; }
