@@ -1,5 +1,7 @@
 #include "app/ExportDialog.h"
 
+#include "app/Folders.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -14,9 +16,9 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QSpinBox>
-#include <QStandardPaths>
 
 #include <cmath>
 
@@ -111,6 +113,9 @@ ExportDialog::ExportDialog(model::Drawing drawing, QWidget* parent) : QDialog(pa
     form->addRow(buttons);
 
     restoreSettings();
+    // Wide enough for the whole path, as far as the screen allows.
+    const int pathWidth = m_path->fontMetrics().horizontalAdvance(m_path->text()) + 4 * m_path->fontMetrics().averageCharWidth();
+    m_path->setMinimumWidth(std::min(pathWidth, screen()->availableGeometry().width() / 2));
 
     connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
     connect(m_path, &QLineEdit::textChanged, this, &ExportDialog::pathEdited);
@@ -257,8 +262,10 @@ void ExportDialog::restoreSettings()
     QSettings settings = appSettings();
     settings.beginGroup(QStringLiteral("export"));
     const render::ExportOptions defaults;
-    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    m_path->setText(settings.value(QStringLiteral("path"), QDir(documents).filePath(QStringLiteral("picture.svg"))).toString());
+    // The last path, while its folder is still there.
+    const QString last = settings.value(QStringLiteral("path")).toString();
+    m_path->setText(!last.isEmpty() && QFileInfo(last).absoluteDir().exists()
+                        ? last : QDir(documentsFolder()).filePath(QStringLiteral("picture.svg")));
     m_dpi->setValue(settings.value(QStringLiteral("dpi"), defaults.dpi).toInt());
     m_unit->setCurrentIndex(std::max(0, m_unit->findData(settings.value(QStringLiteral("unit")).toString())));
     m_pageWidthBox->setValue(settings.value(QStringLiteral("pageWidth"), defaults.pageWidth).toDouble() / pointsPerUnit());

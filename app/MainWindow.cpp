@@ -7,6 +7,7 @@
 
 #include "app/ClipboardExport.h"
 #include "app/ExportDialog.h"
+#include "app/Folders.h"
 #include "app/Recovery.h"
 #include "app/SimulationPanel.h"
 #include "model/ProjectFile.h"
@@ -19,6 +20,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QColorDialog>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -37,6 +39,7 @@ namespace {
 
 constexpr int maxRecentFiles = 8;
 const QString recentKey = QStringLiteral("files/recent");
+const QString saveFolderKey = QStringLiteral("files/saveFolder");  // where Save As saved last
 // The backend and device last chosen, for new documents.
 const QString backendKey = QStringLiteral("simulation/backend");
 const QString deviceKey = QStringLiteral("simulation/device");
@@ -482,11 +485,13 @@ bool MainWindow::save(SaveMode mode)
 
 bool MainWindow::saveAs(SaveMode mode)
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save project"), recentDirectory(), tr("Vector Fluid projects (*.vfproj)"));
+    QString path = QFileDialog::getSaveFileName(this, tr("Save project"), suggestedProjectPath(),
+                                                tr("Vector Fluid projects (*.vfproj)"));
     if (path.isEmpty())
         return false;
     if (!path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive))
         path += QLatin1String(".vfproj");
+    QSettings().setValue(saveFolderKey, QFileInfo(path).absolutePath());
     if (mode == SaveMode::Wait)
         return saveTo(path);
     saveInBackground(path);
@@ -549,6 +554,19 @@ void MainWindow::updateRecentMenu()
                 openFile(path);
         })->setToolTip(path);
     m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+// The project's own path once it has one; else the scene's name (or Untitled) in the folder of
+// the last project saved, or in the documents folder.
+QString MainWindow::suggestedProjectPath() const
+{
+    if (!m_document.filePath().isEmpty())
+        return m_document.filePath();
+    QString folder = QSettings().value(saveFolderKey).toString();
+    if (folder.isEmpty() || !QFileInfo(folder).isDir())
+        folder = documentsFolder();
+    const QString name = m_sceneName.isEmpty() ? tr("Untitled") : m_sceneName;
+    return QDir(folder).filePath(name + QStringLiteral(".vfproj"));
 }
 
 QString MainWindow::recentDirectory() const
@@ -623,7 +641,8 @@ void MainWindow::insertText(const QString& text, QPointF baselineStart)
 void MainWindow::exportPicture()
 {
     ExportDialog dialog(drawing(), this);
-    dialog.exec();
+    if (dialog.exec() == QDialog::Accepted)
+        statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(dialog.filePath())), 10000);
 }
 
 void MainWindow::copySvg()

@@ -85,6 +85,7 @@ private:
     void addRecent(const QString& path);
     void updateRecentMenu();
     void updateTitle();
+    QString suggestedProjectPath() const;
     void showFrame();
     QString recentDirectory() const;
 

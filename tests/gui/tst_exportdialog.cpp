@@ -6,6 +6,7 @@
 #include "../render/SvgReadBack.h"
 #include "app/ClipboardExport.h"
 #include "app/ExportDialog.h"
+#include "app/Folders.h"
 
 #include <QCheckBox>
 #include <QClipboard>
@@ -112,6 +113,7 @@ private slots:
     void pngHasTheSizeTheResolutionImplies();
     void backgroundOffLeavesPngTransparent();
     void pageHeightFollowsTheCanvas();
+    void defaultPathIsInAnExistingFolderAndShownWhole();
     void unwritablePathReportsAndWritesNothing();
     void formatAndSuffixStayInStep();
     void choicesAreRemembered();
@@ -268,6 +270,22 @@ void TestExportDialog::pageHeightFollowsTheCanvas()
     QCOMPARE(width->value(), 6.94);
     QCOMPARE(height->text(), QStringLiteral("3.47 in"));
     QCOMPARE(dialog->options().pageWidth, 500.0);
+}
+
+// The first export goes to the documents folder, or home where there is none; a remembered path
+// whose folder has gone goes there too. The box is wide enough for the whole path.
+void TestExportDialog::defaultPathIsInAnExistingFolderAndShownWhole()
+{
+    QSettings settings(QStringLiteral("vectorfluid"), QStringLiteral("vectorfluid"));
+    for (const QString& remembered : {QString(), path(QStringLiteral("gone/picture.pdf"))}) {
+        settings.setValue(QStringLiteral("export/path"), remembered);
+        const auto dialog = openDialog();
+        const QLineEdit* edit = child<QLineEdit>(*dialog, "path");
+        QCOMPARE(edit->text(), QDir(app::documentsFolder()).filePath(QStringLiteral("picture.svg")));
+        QVERIFY(QFileInfo(edit->text()).absoluteDir().exists());
+        QVERIFY2(edit->width() > edit->fontMetrics().horizontalAdvance(edit->text()),
+                 qPrintable(QStringLiteral("%1 px for a path of %2").arg(edit->width()).arg(edit->fontMetrics().horizontalAdvance(edit->text()))));
+    }
 }
 
 void TestExportDialog::unwritablePathReportsAndWritesNothing()

@@ -3,6 +3,7 @@
 // same). Each test checks the document, the undo stack and the geometry, not pixels.
 #include "FindChild.h"
 #include "app/ExportDialog.h"
+#include "app/Folders.h"
 #include "app/MainWindow.h"
 #include "app/Recovery.h"
 #include "model/ProjectFile.h"
@@ -12,9 +13,11 @@
 #include <glm/geometric.hpp>
 
 #include <QAction>
+#include <QFileDialog>
 #include <QHash>
 #include <QLineEdit>
 #include <QMenu>
+#include <QMenuBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -22,6 +25,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QXmlStreamReader>
 
 using namespace vf;
@@ -71,6 +75,19 @@ double largestMove(const Geometry& a, const Geometry& b)
         most = std::max(most, glm::length(centroid(a[r]) - centroid(b[r])));
     }
     return most;
+}
+
+// Runs `act` on the modal dialog of type T once one is open (the action that opens it blocks in
+// its own event loop until `act` closes it).
+template <typename T>
+void whenModal(std::function<void(T*)> act)
+{
+    QTimer::singleShot(10, qApp, [act] {
+        if (auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget()))
+            act(dialog);
+        else
+            whenModal<T>(act);
+    });
 }
 
 } // namespace
@@ -389,6 +406,58 @@ private slots:
                 ++paths;
         QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
         QCOMPARE(paths, 2);
+    }
+
+    // Ctrl+E, a path, Export: the status bar names the file written.
+    void finishedExportShowsThePathInTheStatusBar()
+    {
+        MainWindow& w = *m_window;
+        const QString svg = m_dir.filePath(QStringLiteral("shown.svg"));
+        whenModal<ExportDialog>([svg](ExportDialog* dialog) {
+            test::child<QLineEdit>(*dialog, "path")->setText(svg);
+            QTest::mouseClick(test::child<QPushButton>(*dialog, "export"), Qt::LeftButton);
+        });
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_E));
+        QVERIFY(QFileInfo::exists(svg));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QDir::toNativeSeparators(svg)), qPrintable(w.statusBar()->currentMessage()));
+    }
+
+    // File ▸ Save As… by mouse: the dialog offers the scene's name in the documents folder (or
+    // home); after a save there, the next Save As starts in that folder.
+    void saveAsSuggestsTheSceneNameInTheLastFolder()
+    {
+        MainWindow& w = *m_window;
+        QSettings().remove(QStringLiteral("files/saveFolder"));
+        QString offered;
+        const auto saveAsByMouse = [&w, &offered](const QString& typed) {
+            whenModal<QFileDialog>([&offered, typed](QFileDialog* dialog) {
+                offered = dialog->selectedFiles().value(0);
+                if (typed.isEmpty())
+                    return dialog->reject();
+                auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+                QVERIFY(name);
+                name->selectAll();
+                QTest::keyClicks(name, typed);
+                QTest::keyClick(name, Qt::Key_Return);
+            });
+            QMenu* file = w.menuBar()->actions().front()->menu();
+            QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(file->menuAction()).center());
+            QAction* saveAs = *std::find_if(file->actions().begin(), file->actions().end(),
+                                            [](QAction* a) { return a->text().startsWith(QStringLiteral("Save &As")); });
+            QTest::mouseClick(file, Qt::LeftButton, {}, file->actionGeometry(saveAs).center());
+            QApplication::setActiveWindow(&w);  // the offscreen platform leaves the menu active
+        };
+        saveAsByMouse({});
+        QCOMPARE(offered, QDir(documentsFolder()).filePath(QStringLiteral("small.vfproj")));
+        QVERIFY(QFileInfo(offered).absoluteDir().exists());
+
+        const QString folder = m_dir.filePath(QStringLiteral("projects"));
+        QVERIFY(QDir().mkpath(folder));
+        saveAsByMouse(QDir(folder).filePath(QStringLiteral("first.vfproj")));
+        QTRY_VERIFY(QFileInfo::exists(QDir(folder).filePath(QStringLiteral("first.vfproj"))));
+        w.newDocument();
+        saveAsByMouse({});
+        QCOMPARE(offered, QDir(folder).filePath(QStringLiteral("Untitled.vfproj")));
     }
 
     void switchingModesChangesViscosity()
