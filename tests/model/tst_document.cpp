@@ -61,6 +61,7 @@ public:
     {
         Frame f;
         f.serial = requests;
+        f.time = state.time;
         f.regions.resize(std::size_t(state.regionCount));
         return f;
     }
@@ -204,6 +205,7 @@ private slots:
         QCOMPARE(doc.undoStack().count(), 0);
 
         Frame stale = port.frame();
+        port.flow(0.1);
         port.drop({0.5, 0.5}, 0.05);  // the worker lands the script's drop while playing
         Frame landed = port.frame();
         landed.serial = stale.serial;  // no request of the document's came in between
@@ -213,6 +215,14 @@ private slots:
         QVERIFY(doc.canAddRegions());
         doc.drop({0.2, 0.2}, 0.05, Qt::red);
         QCOMPARE(doc.regions().back().simIndex, 2);
+        // Deleting regions leaves fewer than the scene has looks: drops still go in.
+        QVERIFY(doc.deleteRegion(0));
+        QVERIFY(doc.deleteRegion(0));
+        QCOMPARE(names(doc.regions()), QStringList({"drop"}));
+        QCOMPARE(doc.regions()[0].simIndex, 0);
+        QVERIFY(doc.canAddRegions());
+        doc.undoStack().undo();
+        doc.undoStack().undo();
 
         // A frame made before the document's last restore shows a replaced state: ignored.
         doc.undoStack().undo();
