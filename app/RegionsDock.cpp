@@ -149,6 +149,8 @@ void RegionsDock::duplicateCurrent()
             p += offset;
     if (!m_document.duplicateRegion(region, contours))
         emit refused(tr("The scene's own drops are still landing; play on and duplicate again"));
+    else
+        selectRegion(int(m_document.regions().size()) - 1);  // the copy, the newest simulation region
 }
 
 void RegionsDock::recolourCurrent()

@@ -622,6 +622,8 @@ private slots:
         QCOMPARE(regions[1].name, QStringLiteral("ink copy"));
         QCOMPARE(regions[1].color, regions[0].color);
         QCOMPARE(regions[1].simIndex, 2);
+        QCOMPARE(view.currentIndex().data().toString(), QStringLiteral("ink copy"));  // the copy is selected
+        QCOMPARE(w.canvas().selectedRegion(), 2);
         QVERIFY(std::abs(largestMove({before[0]}, {after[2]}) - 0.02 * std::sqrt(2.0)) < 1e-3);
         QCOMPARE(w.document().undoStack().undoText(), QStringLiteral("Duplicate ink"));
         QTest::keySequence(&w, QKeySequence::Undo);
