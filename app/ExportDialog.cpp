@@ -107,7 +107,6 @@ ExportDialog::ExportDialog(model::Drawing drawing, QWidget* parent) : QDialog(pa
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel);
     QPushButton* exportButton = buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
     exportButton->setObjectName(QStringLiteral("export"));
-    exportButton->setDefault(true);
 
     auto* form = new QFormLayout(this);
     form->addRow(tr("File:"), pathRow);
@@ -118,6 +117,9 @@ ExportDialog::ExportDialog(model::Drawing drawing, QWidget* parent) : QDialog(pa
     form->addRow(tr("Background:"), m_background);
     form->addRow(tr("Curves:"), m_curves);
     form->addRow(buttons);
+    // Only once the button is in the dialog: setDefault() tells the dialog, which otherwise makes
+    // the first button (Cancel) the one Enter presses.
+    exportButton->setDefault(true);
 
     restoreSettings();
     // Wide enough for the whole path, as far as the screen allows.

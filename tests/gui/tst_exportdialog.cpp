@@ -115,6 +115,7 @@ private slots:
     void pageHeightFollowsTheCanvas();
     void pageHeightIsFreeWithTheCanvasCentred();
     void defaultPathIsInAnExistingFolderAndShownWhole();
+    void returnInThePathExports();
     void unwritablePathReportsAndWritesNothing();
     void formatAndSuffixStayInStep();
     void choicesAreRemembered();
@@ -312,6 +313,17 @@ void TestExportDialog::defaultPathIsInAnExistingFolderAndShownWhole()
         QVERIFY2(edit->width() > edit->fontMetrics().horizontalAdvance(edit->text()),
                  qPrintable(QStringLiteral("%1 px for a path of %2").arg(edit->width()).arg(edit->fontMetrics().horizontalAdvance(edit->text()))));
     }
+}
+
+// Enter in the path box presses Export, the default button.
+void TestExportDialog::returnInThePathExports()
+{
+    const auto dialog = openDialog();
+    QLineEdit* edit = child<QLineEdit>(*dialog, "path");
+    typeInto(edit, path(QStringLiteral("entered.svg")));
+    QTest::keyClick(edit, Qt::Key_Return);
+    QVERIFY(QFileInfo::exists(path(QStringLiteral("entered.svg"))));
+    QCOMPARE(dialog->result(), int(QDialog::Accepted));
 }
 
 void TestExportDialog::unwritablePathReportsAndWritesNothing()
