@@ -615,6 +615,10 @@ private slots:
                 return encodeState(s, StateEncoding::Packed);
             }, StateEncoding::Packed),
             u"states[0]: a contour's previous positions: 8 values, but 10 to predict them from"_s);
+        // Contour 0's positions: count, the first point as it is, then the shift and the planes.
+        row("packed array without plane 0", setState0([](QByteArray raw) { return poke(raw, kContour0XAt + 16 + 1, quint8(0xfe)); },
+                                                      StateEncoding::Packed),
+            u"states[0]: a contour's positions: a packed array's shift 0 or planes 254 are impossible"_s);
     }
 
     void brokenFilesGiveOneLine()
