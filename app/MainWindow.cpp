@@ -1,7 +1,7 @@
 // The main window: its actions, docks and menus, and what each user action does to the document
 // (open, save, import, export, tools, modes). It is one file because every part reaches the same
 // document, canvas and simulation controller; the pieces with their own state already live apart
-// (Canvas, ExportDialog, SimulationPanel, Recovery, ClipboardExport). A later split would move the
+// (Canvas, ExportDialog, RegionsDock, SimulationPanel, Recovery, ClipboardExport). A later split would move the
 // file actions (open, save, recovery) into a class of their own.
 #include "app/MainWindow.h"
 
@@ -28,6 +28,8 @@
 #include <QInputDialog>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QThreadPool>
@@ -286,9 +288,18 @@ void MainWindow::createDocks()
 
     auto* simulation = new QDockWidget(tr("Simulation"), this);
     simulation->setObjectName(QStringLiteral("simulationDock"));
-    m_panel = new SimulationPanel(sim::opencl::listDevices(), simulation);
-    simulation->setWidget(m_panel);
+    // Scrolled, so that the docks fit a window of 800 pixels with the Regions list eight rows tall.
+    auto* scroll = new QScrollArea(simulation);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    m_panel = new SimulationPanel(sim::opencl::listDevices(), scroll);
+    scroll->setWidget(m_panel);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(m_panel->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
+    simulation->setWidget(scroll);
     addDockWidget(Qt::RightDockWidgetArea, simulation);
+    // The settings whole where the window allows; the history takes what is left.
+    resizeDocks({history, simulation}, {1, m_panel->sizeHint().height()}, Qt::Vertical);
     connect(m_panel, &SimulationPanel::settingsEdited, &m_document, &model::Document::setSettings);
 }
 
