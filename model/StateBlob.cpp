@@ -24,17 +24,18 @@ std::span<const double> flat(const std::vector<sim::Vec2>& points)
 }
 
 // A packed array (StateEncoding::Packed) stores each value's 64 bits as the difference from a
-// prediction of them: the value `stride` places before, or the same place in a reference array (a
-// previous position from its position). The first `stride` values, with nothing before them, are
-// stored as they are. Neighbouring vertices and grid cells are close, so the
+// prediction of them: the value `stride` places before, or, with a reference array, the same place
+// there moved as the value `stride` places before moved from its own (a previous position is its
+// position displaced as the vertex before was: the flow is smooth along a contour). The first
+// `stride` values without a reference, with nothing before them, are stored as they are. Neighbouring vertices and grid cells are close, so the
 // differences are small numbers. The trailing zero bits that all of them share are shifted out (the
 // OpenCL backend's float32 values widened to double end in 29 of them), zigzag makes small negative
 // ones small too (0, -1, 1, -2... become 0, 1, 2, 3...), and the rest is stored as byte planes, lowest first,
 // leaving out planes that are zero throughout: every value's lowest byte, then every value's next
 // byte, and so on. Planes of close values are long runs that deflate shrinks well.
 struct Prediction {
-    std::size_t stride = 1;             // from the value this many places before (none: 0 bits)
-    std::span<const double> reference;  // or, where given, from the same place in this array
+    std::size_t stride = 1;             // from the value this many places before, at least 1
+    std::span<const double> reference;  // where given: from the same place here, moved likewise
 };
 
 constexpr Prediction kPointPrediction{2, {}};  // x from the previous x, y from the previous y
@@ -48,7 +49,12 @@ std::uint64_t unzigzag(std::uint64_t z) { return (z >> 1) ^ (0 - (z & 1)); }
 // predict from what it has decoded so far.
 std::uint64_t predicted(const double* values, std::size_t i, const Prediction& prediction)
 {
-    return bitsOf(prediction.reference.empty() ? values[i - prediction.stride] : prediction.reference[i]);
+    const std::size_t before = i - prediction.stride;  // wraps for the first values; not read then
+    if (prediction.reference.empty())
+        return bitsOf(values[before]);
+    // In the bits, wrapping: exact and the same on every machine, unlike arithmetic on doubles.
+    const std::uint64_t moved = i >= prediction.stride ? bitsOf(values[before]) - bitsOf(prediction.reference[before]) : 0;
+    return bitsOf(prediction.reference[i]) + moved;
 }
 
 // How many values at the start are stored as they are.
@@ -325,7 +331,7 @@ QByteArray encodeState(const sim::SimulationState& state, StateEncoding encoding
         blob.integer(std::int32_t(c.region));
         blob.number(c.targetArea);
         blob.points(c.positions);
-        blob.points(c.previous, {0, flat(c.positions)});
+        blob.points(c.previous, {2, flat(c.positions)});
         blob.numbers(c.spacing);
     }
     blob.integer(std::uint8_t(state.fluid ? 1 : 0));
@@ -362,7 +368,7 @@ sim::SimulationState decodeState(const QByteArray& bytes, StateEncoding encoding
         c.region = blob.integer<std::int32_t>("a contour's region");
         c.targetArea = blob.number("a contour's target area");
         c.positions = blob.points("a contour's positions");
-        c.previous = blob.points("a contour's previous positions", {0, flat(c.positions)});
+        c.previous = blob.points("a contour's previous positions", {2, flat(c.positions)});
         c.spacing = blob.numbers("a contour's spacing");
     }
     const auto hasFluid = blob.integer<std::uint8_t>("the fluid flag");
