@@ -303,12 +303,55 @@ void Canvas::paintOverlays(QPainter& painter, double dpr)
             for (const QPolygonF* region : dots)
                 paintVertexDots(painter, *region, dpr);
     }
+    paintSelection(painter, dpr);
     if (m_drag == Drag::Drop && m_dropPreview > 0.0) {
         painter.resetTransform();
         painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
         painter.setBrush(Qt::NoBrush);
         painter.drawEllipse(mapFromCanvas(m_dropCenter), m_dropPreview * m_scale, m_dropPreview * m_scale);
     }
+}
+
+// The selected region's outline: a light line under a dark one, so that it shows on any ink and
+// any background.
+void Canvas::paintSelection(QPainter& painter, double dpr)
+{
+    const auto selected = std::find_if(m_regions.begin(), m_regions.end(),
+                                       [this](const model::RegionLook& look) { return look.simIndex == m_selected; });
+    if (selected == m_regions.end() || !isShown(*selected))
+        return;
+    const QPainterPath& outline = m_paths.region(std::size_t(m_selected));
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(Qt::white, 3.0 * dpr));
+    painter.drawPath(outline);
+    painter.setPen(QPen(palette().color(QPalette::Highlight).darker(130), 1.5 * dpr));
+    painter.drawPath(outline);
+}
+
+void Canvas::setSelectedRegion(int simIndex)
+{
+    if (simIndex == m_selected)
+        return;
+    m_selected = simIndex;
+    update();
+}
+
+int Canvas::regionAt(QPointF canvasPos) const
+{
+    if (!m_frame)
+        return -1;
+    const sim::Vec2 p(canvasPos.x(), canvasPos.y());
+    for (auto look = m_regions.rbegin(); look != m_regions.rend(); ++look) {
+        if (!isShown(*look))
+            continue;
+        // Even-odd, as the region is filled: inside an odd number of its contours.
+        bool inside = false;
+        for (const sim::Polygon& contour : m_frame->regions[std::size_t(look->simIndex)])
+            inside ^= sim::windingNumber(contour, p) != 0;
+        if (inside)
+            return look->simIndex;
+    }
+    return -1;
 }
 
 void Canvas::setShowVertices(bool show)
@@ -372,6 +415,8 @@ void Canvas::updateCursor()
         setCursor(stylusCursor());
     else if (m_tool == Tool::Text)
         setCursor(Qt::IBeamCursor);
+    else if (m_tool == Tool::Select)
+        setCursor(Qt::PointingHandCursor);
     else
         setCursor(Qt::CrossCursor);
 }
@@ -394,6 +439,9 @@ void Canvas::mousePressEvent(QMouseEvent* event)
     }
     const QPointF at = mapToCanvas(pos);
     switch (m_tool) {
+    case Tool::Select:
+        emit regionClicked(regionAt(at));
+        break;
     case Tool::Drop:
         m_drag = Drag::Drop;
         m_dropCenter = at;

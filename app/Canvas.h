@@ -22,7 +22,7 @@ class QNativeGestureEvent;
 
 namespace vf::app {
 
-enum class Tool { Drop, Stylus, Text, Pan };
+enum class Tool { Select, Drop, Stylus, Text, Pan };
 
 class Canvas : public QWidget {
     Q_OBJECT
@@ -37,6 +37,11 @@ public:
     void setBackground(QColor color);
     void setTool(Tool tool);
     Tool tool() const { return m_tool; }
+    // The region outlined as selected, by simulation index; -1: none.
+    void setSelectedRegion(int simIndex);
+    int selectedRegion() const { return m_selected; }
+    // The topmost shown region whose ink covers `canvasPos`, by simulation index; -1: none.
+    int regionAt(QPointF canvasPos) const;
 
     double clickDropRadius() const { return m_clickDropRadius; }
     void setClickDropRadius(double fractionOfWidth) { m_clickDropRadius = fractionOfWidth; }
@@ -67,6 +72,8 @@ signals:
     void strokeMoved(QPointF from, QPointF to, double seconds);
     void strokeFinished();
     void textRequested(QPointF baselineStart);
+    // The Select tool clicked: the region there (regionAt), or -1 for bare water.
+    void regionClicked(int simIndex);
     void displayFpsChanged(int fps);
     void zoomChanged(double zoom);
 
@@ -92,6 +99,7 @@ private:
     void invalidateInk();
     void paintInk(QSize deviceSize, double dpr);
     void paintOverlays(QPainter& painter, double dpr);
+    void paintSelection(QPainter& painter, double dpr);
     void zoomAbout(QPointF widgetPos, double factor);
     void setView(double scale, QPointF offset);
     void updateCursor();
@@ -118,6 +126,7 @@ private:
     bool m_showGrid = false;
 
     Tool m_tool = Tool::Drop;
+    int m_selected = -1;
     double m_clickDropRadius = 0.05;
     bool m_spaceHeld = false;
     Drag m_drag = Drag::None;

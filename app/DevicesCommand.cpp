@@ -1,4 +1,5 @@
 // `vectorfluid devices`: list the OpenCL platforms and devices this machine offers.
+#include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "sim/opencl/DeviceList.h"
 
@@ -8,11 +9,18 @@ namespace vf::app {
 
 int devicesCommand(const QStringList& arguments)
 {
-    QTextStream out(stdout);
-    if (!arguments.isEmpty()) {
-        QTextStream(stderr) << "vectorfluid: devices takes no arguments\n";
+    CommandLine commandLine(QStringLiteral("vectorfluid devices"),
+                            QStringLiteral("usage: vectorfluid devices\nLists the OpenCL platforms and devices, "
+                                           "numbered as render --device takes them.\n"));
+    const QString refusal = QStringLiteral("devices takes no arguments (see vectorfluid devices --help)");
+    commandLine.setRefusal(refusal);
+    if (const std::optional<int> exitCode = commandLine.parse(arguments))
+        return *exitCode;
+    if (!commandLine.parser().positionalArguments().isEmpty()) {
+        printError(refusal);
         return BadInput;
     }
+    QTextStream out(stdout);
     const sim::opencl::DeviceListing listing = sim::opencl::listDevices();
     if (!listing.error.empty()) {
         out << "no OpenCL devices: " << QString::fromStdString(listing.error) << '\n';

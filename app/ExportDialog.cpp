@@ -1,5 +1,7 @@
 #include "app/ExportDialog.h"
 
+#include "app/Folders.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -10,13 +12,12 @@
 #include <QFormLayout>
 #include <QGuiApplication>
 #include <QHBoxLayout>
-#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QSpinBox>
-#include <QStandardPaths>
 
 #include <cmath>
 
@@ -80,8 +81,16 @@ ExportDialog::ExportDialog(model::Drawing drawing, QWidget* parent) : QDialog(pa
     auto* widthRow = new QHBoxLayout;
     widthRow->addWidget(m_pageWidthBox, 1);
     widthRow->addWidget(m_unit);
-    m_pageHeight = new QLabel;
-    m_pageHeight->setObjectName(QStringLiteral("pageHeight"));
+    m_pageHeightBox = new QDoubleSpinBox;
+    m_pageHeightBox->setObjectName(QStringLiteral("pageHeight"));
+    m_pageHeightBox->setRange(0.01, 1e6);
+    m_pageHeightBox->setDecimals(2);
+    m_keepAspect = new QCheckBox(tr("Canvas proportions"));
+    m_keepAspect->setObjectName(QStringLiteral("keepAspect"));
+    m_keepAspect->setToolTip(tr("The height follows the width; off, the canvas is centred on a page of any size"));
+    auto* heightRow = new QHBoxLayout;
+    heightRow->addWidget(m_pageHeightBox, 1);
+    heightRow->addWidget(m_keepAspect);
 
     m_dpi = new QSpinBox;
     m_dpi->setObjectName(QStringLiteral("dpi"));
@@ -98,30 +107,37 @@ ExportDialog::ExportDialog(model::Drawing drawing, QWidget* parent) : QDialog(pa
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel);
     QPushButton* exportButton = buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
     exportButton->setObjectName(QStringLiteral("export"));
-    exportButton->setDefault(true);
 
     auto* form = new QFormLayout(this);
     form->addRow(tr("File:"), pathRow);
     form->addRow(tr("Format:"), m_format);
     form->addRow(tr("Page width:"), widthRow);
-    form->addRow(tr("Page height:"), m_pageHeight);
+    form->addRow(tr("Page height:"), heightRow);
     form->addRow(tr("Resolution:"), m_dpi);
     form->addRow(tr("Background:"), m_background);
     form->addRow(tr("Curves:"), m_curves);
     form->addRow(buttons);
+    // Only once the button is in the dialog: setDefault() tells the dialog, which otherwise makes
+    // the first button (Cancel) the one Enter presses.
+    exportButton->setDefault(true);
 
     restoreSettings();
+    // Wide enough for the whole path, as far as the screen allows.
+    const int pathWidth = m_path->fontMetrics().horizontalAdvance(m_path->text()) + 4 * m_path->fontMetrics().averageCharWidth();
+    m_path->setMinimumWidth(std::min(pathWidth, screen()->availableGeometry().width() / 2));
 
     connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
     connect(m_path, &QLineEdit::textChanged, this, &ExportDialog::pathEdited);
     connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::formatPicked);
     connect(m_pageWidthBox, &QDoubleSpinBox::valueChanged, this, &ExportDialog::pageWidthEdited);
+    connect(m_pageHeightBox, &QDoubleSpinBox::valueChanged, this, &ExportDialog::pageHeightEdited);
+    connect(m_keepAspect, &QCheckBox::toggled, this, &ExportDialog::keepAspectToggled);
     connect(m_unit, &QComboBox::currentIndexChanged, this, &ExportDialog::unitPicked);
     connect(m_dpi, &QSpinBox::valueChanged, this, &ExportDialog::dpiEdited);
     connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::exportFile);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     pathEdited();
-    updatePageHeight();
+    keepAspectToggled(m_keepAspect->isChecked());
 }
 
 QString ExportDialog::filePath() const
@@ -134,6 +150,7 @@ render::ExportOptions ExportDialog::options() const
     render::ExportOptions options;
     options.bezier = m_curves->currentData().toBool();
     options.pageWidth = m_pageWidth;
+    options.pageHeight = m_keepAspect->isChecked() ? 0.0 : m_pageHeight;
     options.dpi = m_dpi->value();
     options.background = m_background->isChecked();
     return options;
@@ -202,35 +219,52 @@ void ExportDialog::pathEdited()
 void ExportDialog::pageWidthEdited()
 {
     m_pageWidth = m_pageWidthBox->value() * pointsPerUnit();
-    updatePageHeight();
+    if (m_keepAspect->isChecked())
+        followCanvasAspect();
 }
 
-// The page keeps its size; only the number shown changes.
+void ExportDialog::pageHeightEdited()
+{
+    m_pageHeight = m_pageHeightBox->value() * pointsPerUnit();
+}
+
+void ExportDialog::keepAspectToggled(bool keep)
+{
+    m_pageHeightBox->setEnabled(!keep);
+    if (keep)
+        followCanvasAspect();
+    else
+        showPageSize();
+}
+
+void ExportDialog::followCanvasAspect()
+{
+    m_pageHeight = m_drawing.width > 0 ? m_pageWidth * m_drawing.height / m_drawing.width : m_pageWidth;
+    showPageSize();
+}
+
+// The page keeps its size; only the numbers shown change.
 void ExportDialog::unitPicked()
 {
-    {
-        const QSignalBlocker blocker(m_pageWidthBox);
-        m_pageWidthBox->setValue(m_pageWidth / pointsPerUnit());
-    }
-    updatePageHeight();
+    showPageSize();
     updateEnabled();
 }
 
-// A width in pixels keeps its pixel count; the page's size in points follows the resolution.
-void ExportDialog::dpiEdited()
+void ExportDialog::showPageSize()
 {
-    if (m_unit->currentData().toString() == kPixels)
-        pageWidthEdited();
+    const QSignalBlocker widthBlocker(m_pageWidthBox), heightBlocker(m_pageHeightBox);
+    m_pageWidthBox->setValue(m_pageWidth / pointsPerUnit());
+    m_pageHeightBox->setValue(m_pageHeight / pointsPerUnit());
 }
 
-void ExportDialog::updatePageHeight()
+// A size in pixels keeps its pixel counts; the page's size in points follows the resolution.
+void ExportDialog::dpiEdited()
 {
-    const double aspect = m_drawing.width > 0 ? m_drawing.height / m_drawing.width : 0.0;
-    const QString unit = m_unit->currentData().toString();
-    const double height = m_pageWidth * aspect / pointsPerUnit();
-    m_pageHeight->setText(QStringLiteral("%1 %2").arg(unit == kPixels ? std::round(height) : height, 0, 'f',
-                                                       unit == kPixels ? 0 : 2)
-                              .arg(unit));
+    if (m_unit->currentData().toString() != kPixels)
+        return;
+    pageWidthEdited();
+    if (!m_keepAspect->isChecked())
+        pageHeightEdited();
 }
 
 void ExportDialog::updateEnabled()
@@ -257,12 +291,16 @@ void ExportDialog::restoreSettings()
     QSettings settings = appSettings();
     settings.beginGroup(QStringLiteral("export"));
     const render::ExportOptions defaults;
-    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    m_path->setText(settings.value(QStringLiteral("path"), QDir(documents).filePath(QStringLiteral("picture.svg"))).toString());
+    // The last path, while its folder is still there.
+    const QString last = settings.value(QStringLiteral("path")).toString();
+    m_path->setText(!last.isEmpty() && QFileInfo(last).absoluteDir().exists()
+                        ? last : QDir(documentsFolder()).filePath(QStringLiteral("picture.svg")));
     m_dpi->setValue(settings.value(QStringLiteral("dpi"), defaults.dpi).toInt());
     m_unit->setCurrentIndex(std::max(0, m_unit->findData(settings.value(QStringLiteral("unit")).toString())));
     m_pageWidthBox->setValue(settings.value(QStringLiteral("pageWidth"), defaults.pageWidth).toDouble() / pointsPerUnit());
     m_pageWidth = m_pageWidthBox->value() * pointsPerUnit();
+    m_pageHeight = settings.value(QStringLiteral("pageHeight"), m_pageWidth).toDouble();
+    m_keepAspect->setChecked(settings.value(QStringLiteral("keepAspect"), true).toBool());
     m_background->setChecked(settings.value(QStringLiteral("background"), defaults.background).toBool());
     m_curves->setCurrentIndex(m_curves->findData(settings.value(QStringLiteral("bezier"), defaults.bezier).toBool()));
 }
@@ -276,6 +314,8 @@ void ExportDialog::saveSettings() const
     settings.setValue(QStringLiteral("dpi"), m_dpi->value());
     settings.setValue(QStringLiteral("unit"), m_unit->currentData());
     settings.setValue(QStringLiteral("pageWidth"), chosen.pageWidth);
+    settings.setValue(QStringLiteral("pageHeight"), m_pageHeight);
+    settings.setValue(QStringLiteral("keepAspect"), m_keepAspect->isChecked());
     settings.setValue(QStringLiteral("background"), chosen.background);
     settings.setValue(QStringLiteral("bezier"), chosen.bezier);
 }

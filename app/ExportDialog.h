@@ -1,6 +1,7 @@
 #pragma once
-// File > Export: writes the current picture through render::exportDrawing, with the page size,
-// resolution, background and curve options of the command line, remembered between sessions.
+// File > Export: writes the current picture through render::exportDrawing, with the page size
+// (the canvas's proportions, or any other with the canvas centred), resolution, background and
+// curve options, remembered between sessions.
 #include "model/Drawing.h"
 #include "render/Exporter.h"
 
@@ -9,7 +10,6 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
-class QLabel;
 class QLineEdit;
 class QSpinBox;
 
@@ -33,9 +33,12 @@ private:
     void formatPicked();
     void pathEdited();
     void pageWidthEdited();
+    void pageHeightEdited();
+    void keepAspectToggled(bool keep);
+    void followCanvasAspect();
     void unitPicked();
     void dpiEdited();
-    void updatePageHeight();
+    void showPageSize();
     void updateEnabled();
     double pointsPerUnit() const;
     void restoreSettings();
@@ -43,13 +46,15 @@ private:
 
     model::Drawing m_drawing;
     double m_pageWidth = render::ExportOptions{}.pageWidth;  // points; what the spin box shows in its unit
+    double m_pageHeight = m_pageWidth;                        // points; likewise
     QString m_lastError;
 
     QLineEdit* m_path = nullptr;
     QComboBox* m_format = nullptr;
     QDoubleSpinBox* m_pageWidthBox = nullptr;
     QComboBox* m_unit = nullptr;
-    QLabel* m_pageHeight = nullptr;
+    QDoubleSpinBox* m_pageHeightBox = nullptr;
+    QCheckBox* m_keepAspect = nullptr;
     QSpinBox* m_dpi = nullptr;
     QCheckBox* m_background = nullptr;
     QComboBox* m_curves = nullptr;

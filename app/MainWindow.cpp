@@ -1,12 +1,13 @@
 // The main window: its actions, docks and menus, and what each user action does to the document
 // (open, save, import, export, tools, modes). It is one file because every part reaches the same
 // document, canvas and simulation controller; the pieces with their own state already live apart
-// (Canvas, ExportDialog, SimulationPanel, Recovery, ClipboardExport). A later split would move the
+// (Canvas, ExportDialog, RegionsDock, SimulationPanel, Recovery, ClipboardExport). A later split would move the
 // file actions (open, save, recovery) into a class of their own.
 #include "app/MainWindow.h"
 
 #include "app/ClipboardExport.h"
 #include "app/ExportDialog.h"
+#include "app/Folders.h"
 #include "app/Recovery.h"
 #include "app/SimulationPanel.h"
 #include "model/ProjectFile.h"
@@ -19,6 +20,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QColorDialog>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -26,11 +28,12 @@
 #include <QInputDialog>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QThreadPool>
 #include <QToolBar>
-#include <QVBoxLayout>
 
 namespace vf::app {
 
@@ -38,6 +41,7 @@ namespace {
 
 constexpr int maxRecentFiles = 8;
 const QString recentKey = QStringLiteral("files/recent");
+const QString saveFolderKey = QStringLiteral("files/saveFolder");  // where Save As saved last
 // The backend and device last chosen, for new documents.
 const QString backendKey = QStringLiteral("simulation/backend");
 const QString deviceKey = QStringLiteral("simulation/device");
@@ -131,6 +135,9 @@ void MainWindow::createActions()
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
+    edit->addAction(m_regionsDock->duplicateAction());
+    edit->addAction(m_regionsDock->deleteAction());
+    edit->addSeparator();
     edit->addAction(tr("History &Memory…"), this, [this] {
         bool ok = false;
         const int mb = QInputDialog::getInt(this, tr("History memory"),
@@ -156,6 +163,7 @@ void MainWindow::createActions()
         Tool tool;
         const char* name;
     } toolList[] = {
+        {tr("Se&lect"), QKeySequence(Qt::Key_V), Tool::Select, "toolSelect"},
         {tr("&Drop"), QKeySequence(Qt::Key_D), Tool::Drop, "toolDrop"},
         {tr("&Stylus"), QKeySequence(Qt::Key_S), Tool::Stylus, "toolStylus"},
         {tr("&Text"), QKeySequence(Qt::Key_T), Tool::Text, "toolText"},
@@ -172,7 +180,7 @@ void MainWindow::createActions()
         tools->addAction(a);
         toolMenu->addAction(a);
     }
-    toolGroup->actions().front()->setChecked(true);
+    findChild<QAction*>(QStringLiteral("toolDrop"))->setChecked(true);
     m_canvas->setTool(Tool::Drop);
 
     auto* colorButton = new QPushButton(tr("Ink"), this);
@@ -268,38 +276,8 @@ void MainWindow::createActions()
 
 void MainWindow::createDocks()
 {
-    // Regions: the topmost first; name editable in place, colour by double-click on the swatch
-    // (or the Colour button), visibility by the check box, order by drag or the buttons.
-    auto* regions = new QDockWidget(tr("Regions"), this);
-    regions->setObjectName(QStringLiteral("regionsDock"));
-    auto* regionsContent = new QWidget(regions);
-    auto* layout = new QVBoxLayout(regionsContent);
-    m_regionView = new QListView(regionsContent);
-    m_regionView->setObjectName(QStringLiteral("regionView"));
-    m_regionView->setModel(&m_regionModel);
-    m_regionView->setDragDropMode(QAbstractItemView::InternalMove);
-    m_regionView->setDefaultDropAction(Qt::MoveAction);
-    m_regionView->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked);
-    layout->addWidget(m_regionView);
-    auto* buttons = new QHBoxLayout;
-    const struct {
-        QString text;
-        const char* name;
-        std::function<void()> action;
-    } buttonList[] = {
-        {tr("Colour…"), "recolour", [this] { recolourSelected(); }},
-        {tr("Raise"), "raise", [this] { raiseSelected(1); }},
-        {tr("Lower"), "lower", [this] { raiseSelected(-1); }},
-    };
-    for (const auto& b : buttonList) {
-        auto* button = new QPushButton(b.text, regionsContent);
-        button->setObjectName(QLatin1String(b.name));
-        connect(button, &QPushButton::clicked, this, b.action);
-        buttons->addWidget(button);
-    }
-    layout->addLayout(buttons);
-    regions->setWidget(regionsContent);
-    addDockWidget(Qt::RightDockWidgetArea, regions);
+    m_regionsDock = new RegionsDock(m_document, m_regionModel, m_simulation, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_regionsDock);
 
     auto* history = new QDockWidget(tr("History"), this);
     history->setObjectName(QStringLiteral("historyDock"));
@@ -310,9 +288,18 @@ void MainWindow::createDocks()
 
     auto* simulation = new QDockWidget(tr("Simulation"), this);
     simulation->setObjectName(QStringLiteral("simulationDock"));
-    m_panel = new SimulationPanel(sim::opencl::listDevices(), simulation);
-    simulation->setWidget(m_panel);
+    // Scrolled, so that the docks fit a window of 800 pixels with the Regions list eight rows tall.
+    auto* scroll = new QScrollArea(simulation);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    m_panel = new SimulationPanel(sim::opencl::listDevices(), scroll);
+    scroll->setWidget(m_panel);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(m_panel->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
+    simulation->setWidget(scroll);
     addDockWidget(Qt::RightDockWidgetArea, simulation);
+    // The settings whole where the window allows; the history takes what is left.
+    resizeDocks({history, simulation}, {1, m_panel->sizeHint().height()}, Qt::Vertical);
     connect(m_panel, &SimulationPanel::settingsEdited, &m_document, &model::Document::setSettings);
 }
 
@@ -374,6 +361,9 @@ void MainWindow::connectDocument()
         m_document.stroke(toVec(from), toVec(to), m_stylusRadius, seconds);
     });
     connect(m_canvas, &Canvas::textRequested, this, &MainWindow::askText);
+    connect(m_canvas, &Canvas::regionClicked, m_regionsDock, &RegionsDock::selectRegion);
+    connect(m_regionsDock, &RegionsDock::selectedRegionChanged, m_canvas, &Canvas::setSelectedRegion);
+    connect(m_regionsDock, &RegionsDock::refused, this, [this](const QString& reason) { statusBar()->showMessage(reason, 5000); });
 }
 
 // ---- Frames -------------------------------------------------------------------------------------------
@@ -506,11 +496,13 @@ bool MainWindow::save(SaveMode mode)
 
 bool MainWindow::saveAs(SaveMode mode)
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save project"), recentDirectory(), tr("Vector Fluid projects (*.vfproj)"));
+    QString path = QFileDialog::getSaveFileName(this, tr("Save project"), suggestedProjectPath(),
+                                                tr("Vector Fluid projects (*.vfproj)"));
     if (path.isEmpty())
         return false;
     if (!path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive))
         path += QLatin1String(".vfproj");
+    QSettings().setValue(saveFolderKey, QFileInfo(path).absolutePath());
     if (mode == SaveMode::Wait)
         return saveTo(path);
     saveInBackground(path);
@@ -573,6 +565,19 @@ void MainWindow::updateRecentMenu()
                 openFile(path);
         })->setToolTip(path);
     m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+// The project's own path once it has one; else the scene's name (or Untitled) in the folder of
+// the last project saved, or in the documents folder.
+QString MainWindow::suggestedProjectPath() const
+{
+    if (!m_document.filePath().isEmpty())
+        return m_document.filePath();
+    QString folder = QSettings().value(saveFolderKey).toString();
+    if (folder.isEmpty() || !QFileInfo(folder).isDir())
+        folder = documentsFolder();
+    const QString name = m_sceneName.isEmpty() ? tr("Untitled") : m_sceneName;
+    return QDir(folder).filePath(name + QStringLiteral(".vfproj"));
 }
 
 QString MainWindow::recentDirectory() const
@@ -647,7 +652,8 @@ void MainWindow::insertText(const QString& text, QPointF baselineStart)
 void MainWindow::exportPicture()
 {
     ExportDialog dialog(drawing(), this);
-    dialog.exec();
+    if (dialog.exec() == QDialog::Accepted)
+        statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(dialog.filePath())), 10000);
 }
 
 void MainWindow::copySvg()
@@ -675,34 +681,6 @@ void MainWindow::setInkColor(const QColor& color)
         swatch.fill(color);
         button->setIcon(QIcon(swatch));
     }
-}
-
-void MainWindow::recolourSelected()
-{
-    const QModelIndex index = m_regionView->currentIndex();
-    if (!index.isValid())
-        return;
-    const QColor current = index.data(model::RegionListModel::ColorRole).value<QColor>();
-    const QColor chosen = QColorDialog::getColor(current, this, tr("Region colour"), QColorDialog::ShowAlphaChannel);
-    if (chosen.isValid())
-        m_regionModel.setData(index, chosen, model::RegionListModel::ColorRole);
-}
-
-void MainWindow::raiseSelected(int by)
-{
-    // Up the list is up the paint order.
-    const QModelIndex index = m_regionView->currentIndex();
-    if (!index.isValid())
-        return;
-    const int row = index.row();
-    const int target = row - by;
-    if (target < 0 || target >= m_regionModel.rowCount())
-        return;
-    const QString name = index.data().toString();
-    m_regionModel.moveRows({}, row, 1, {}, by > 0 ? target : target + 1);
-    const QModelIndexList moved = m_regionModel.match(m_regionModel.index(0), Qt::DisplayRole, name, 1, Qt::MatchExactly);
-    if (!moved.isEmpty())
-        m_regionView->setCurrentIndex(moved.front());
 }
 
 } // namespace vf::app

@@ -2,6 +2,7 @@
 // The desktop app's main window: the canvas, the tool bar, the Regions / History / Simulation
 // docks, the menus and the status bar, over one Document and its simulation worker.
 #include "app/Canvas.h"
+#include "app/RegionsDock.h"
 #include "app/SimulationController.h"
 #include "model/Document.h"
 #include "model/Drawing.h"
@@ -52,7 +53,7 @@ public:
     SimulationController& simulation() { return m_simulation; }
     Canvas& canvas() { return *m_canvas; }
     model::RegionListModel& regionModel() { return m_regionModel; }
-    QListView& regionView() { return *m_regionView; }
+    QListView& regionView() { return m_regionsDock->view(); }
     Recovery& recovery() { return *m_recovery; }
     model::Drawing drawing() const;  // the picture as it is now, for export
     QColor inkColor() const { return m_inkColor; }
@@ -84,16 +85,15 @@ private:
     void addRecent(const QString& path);
     void updateRecentMenu();
     void updateTitle();
+    QString suggestedProjectPath() const;
     void showFrame();
-    void raiseSelected(int by);
-    void recolourSelected();
     QString recentDirectory() const;
 
     SimulationController m_simulation;
     model::Document m_document;
     model::RegionListModel m_regionModel;
     Canvas* m_canvas;
-    QListView* m_regionView = nullptr;
+    RegionsDock* m_regionsDock = nullptr;
     QUndoView* m_historyView = nullptr;
     SimulationPanel* m_panel = nullptr;
     Recovery* m_recovery = nullptr;

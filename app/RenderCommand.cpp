@@ -1,5 +1,6 @@
 // `vectorfluid render SCENE ...`: run a scene headless and write files (README, "The command line").
 #include "app/Backend.h"
+#include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/RenderOptions.h"
 #include "model/AtomicFile.h"
@@ -32,11 +33,6 @@ struct RunTotals {
     QString limit;           // which limit, when limitHit
     QString crossing;        // --check-topology: the first crossing found, if any
 };
-
-void fail(const QString& line)
-{
-    QTextStream(stderr) << "vectorfluid: " << line << '\n';
-}
 
 // The backend the options ask for (app/Backend.h); a fallback notice is shown once the run is done.
 model::SimulationFactory backendFactory(const RenderOptions& options, QString& notice)
@@ -146,19 +142,23 @@ private:
 
 int renderCommand(const QStringList& arguments)
 {
+    CommandLine commandLine(QStringLiteral("vectorfluid render"), QString::fromLatin1(renderUsage));
+    addRenderOptions(commandLine.parser());
+    if (const std::optional<int> exitCode = commandLine.parse(arguments))
+        return *exitCode;
     QString error;
-    const auto options = parseRenderOptions(arguments, error);
+    const auto options = renderOptions(commandLine.parser(), error);
     if (!options) {
-        fail(error);
+        printError(error);
         return BadInput;
     }
     const model::SceneReadResult read = model::readSceneFile(options->scene);
     if (!read.ok()) {
-        fail(read.error);
+        printError(read.error);
         return BadInput;
     }
     if (const QString error = checkOutputFolders(*options); !error.isEmpty()) {
-        fail(error);
+        printError(error);
         return BadInput;
     }
 
@@ -214,17 +214,17 @@ int renderCommand(const QStringList& arguments)
         error = QStringLiteral("%1: %2").arg(options->scene, QString::fromUtf8(e.what()));
     }
     if (!error.isEmpty()) {
-        fail(error);  // the one line bad input gets; a fallback notice would only distract from it
+        printError(error);  // the one line bad input gets; a fallback notice would only distract from it
         return BadInput;
     }
     if (!notice.isEmpty())
-        fail(notice);
+        printError(notice);
     if (!totals.crossing.isEmpty()) {
-        fail(QStringLiteral("%1: %2; the files hold the state at that step").arg(options->scene, totals.crossing));
+        printError(QStringLiteral("%1: %2; the files hold the state at that step").arg(options->scene, totals.crossing));
         return TopologyBroken;
     }
     if (totals.limitHit) {
-        fail(QStringLiteral("%1: %2 at step %3 of %4; the files hold the state at that step")
+        printError(QStringLiteral("%1: %2 at step %3 of %4; the files hold the state at that step")
                  .arg(options->scene, totals.limit)
                  .arg(totals.steps)
                  .arg(steps));

@@ -2,6 +2,7 @@
 // `vectorfluid render` arguments, parsed and checked before any simulation starts.
 #include "render/Exporter.h"
 
+#include <QCommandLineParser>
 #include <QString>
 #include <QStringList>
 
@@ -23,7 +24,15 @@ struct RenderOptions {
     qint64 checkTopologyEvery = 0;  // --check-topology K: an exact crossing check every K steps; 0: none
 };
 
-// Parses the arguments after `render`. On failure returns nullopt and sets `error` to one line.
-std::optional<RenderOptions> parseRenderOptions(const QStringList& arguments, QString& error);
+// The synopsis of `vectorfluid render` (README, "The command line").
+extern const char* const renderUsage;
+
+// Declares render's options and its SCENE argument to `parser`.
+void addRenderOptions(QCommandLineParser& parser);
+
+// The options from a parser that has parsed render's arguments. On failure returns nullopt and
+// sets `error` to one line. With nothing asked to be written (no --out, --stats or --frames), the
+// output is SCENE's name with .svg, beside it.
+std::optional<RenderOptions> renderOptions(const QCommandLineParser& parser, QString& error);
 
 } // namespace vf::app

@@ -70,6 +70,11 @@ void SimulationController::addRegion(const std::vector<sim::Polygon>& contours)
     post([contours](SimulationWorker& w) { w.addRegion(contours); });
 }
 
+void SimulationController::removeRegion(int region)
+{
+    post([region](SimulationWorker& w) { w.removeRegion(region); });
+}
+
 void SimulationController::drop(sim::Vec2 center, double radius)
 {
     post([center, radius](SimulationWorker& w) { w.drop(center, radius); });

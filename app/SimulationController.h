@@ -23,6 +23,7 @@ public:
     void snapshot(const model::StateSlotPtr& into) override;
     void restore(const model::StateSlotPtr& from) override;
     void addRegion(const std::vector<sim::Polygon>& contours) override;
+    void removeRegion(int region) override;
     void drop(sim::Vec2 center, double radius) override;
     void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds) override;
     std::uint64_t requestCount() const override { return m_requests; }

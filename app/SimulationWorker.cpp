@@ -1,6 +1,7 @@
 #include "app/SimulationWorker.h"
 
 #include "app/Backend.h"
+#include "model/RegionRemoval.h"
 #include "model/SceneRunner.h"
 
 #include <algorithm>
@@ -141,6 +142,14 @@ void SimulationWorker::addRegion(const std::vector<sim::Polygon>& contours)
 {
     if (m_simulation)
         m_simulation->addRegion(contours);
+}
+
+void SimulationWorker::removeRegion(int region)
+{
+    if (!m_simulation)
+        return;
+    m_simulation->restore(model::withoutRegion(m_simulation->snapshot(), region));
+    m_copying.reset();  // restore() dropped the copy
 }
 
 void SimulationWorker::drop(sim::Vec2 center, double radius)

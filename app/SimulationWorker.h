@@ -32,6 +32,7 @@ public:
     void snapshot(const model::StateSlotPtr& into);
     void restore(const model::StateSlotPtr& from);
     void addRegion(const std::vector<sim::Polygon>& contours);
+    void removeRegion(int region);
     void drop(sim::Vec2 center, double radius);
     void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
     void setPlaying(bool playing);

@@ -1,9 +1,9 @@
 // vectorfluid: with no command (or a file), the desktop app; `render` and `devices` run headless
-// (no display needed, no QApplication).
+// (no display needed, no QApplication), as do the program's own options (--help, --version).
+#include "app/CommandLine.h"
 #include "app/Commands.h"
 
 #include <QCoreApplication>
-#include <QTextStream>
 
 #include <cstring>
 
@@ -13,15 +13,25 @@ const char* usage =
     "usage: vectorfluid [FILE.vfproj | FILE.vfscene]   open the app\n"
     "       vectorfluid render SCENE [--steps N] [--dt S] [--backend reference|opencl] [--device N]\n"
     "                          [--out FILE]... [--polyline] [--dpi N] [--frames DIR --every K]\n"
-    "                          [--stats FILE.json]\n"
-    "       vectorfluid devices\n";
+    "                          [--stats FILE.json] [--check-topology K]\n"
+    "       vectorfluid devices\n"
+    "`vectorfluid render --help` and `vectorfluid devices --help` describe the commands.\n";
 
-bool isHeadless(const char* command)
+bool isHeadless(const char* argument)
 {
-    for (const char* c : {"render", "devices", "--help", "-h"})
-        if (std::strcmp(command, c) == 0)
-            return true;
-    return false;
+    return argument[0] == '-' || std::strcmp(argument, "render") == 0 || std::strcmp(argument, "devices") == 0;
+}
+
+// `vectorfluid --help`, `--version` and anything else that starts with a dash.
+int programOptions(const QStringList& arguments)
+{
+    vf::app::CommandLine commandLine(QStringLiteral("vectorfluid"), QString::fromLatin1(usage));
+    commandLine.parser().addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("A project or scene to open in the app."));
+    if (const std::optional<int> exitCode = commandLine.parse(arguments))
+        return *exitCode;
+    // Parsed, yet neither --help nor --version: "--" before a file, which the app does not take.
+    vf::app::printError(QStringLiteral("give a file to open without options (see vectorfluid --help)"));
+    return vf::app::BadInput;
 }
 
 } // namespace
@@ -34,11 +44,9 @@ int main(int argc, char** argv)
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("vectorfluid"));
     QStringList arguments = QCoreApplication::arguments().mid(1);
-    const QString command = arguments.takeFirst();
-    if (command == QLatin1String("render"))
-        return vf::app::renderCommand(arguments);
-    if (command == QLatin1String("devices"))
-        return vf::app::devicesCommand(arguments);
-    QTextStream(stdout) << usage;
-    return vf::app::Done;
+    if (arguments.front() == QLatin1String("render"))
+        return vf::app::renderCommand(arguments.mid(1));
+    if (arguments.front() == QLatin1String("devices"))
+        return vf::app::devicesCommand(arguments.mid(1));
+    return programOptions(arguments);
 }

@@ -66,6 +66,7 @@ void Document::open(const Scene& scene, const EngineSettings& settings, const Re
     m_scene = scene;
     m_script.emplace(m_scene);
     m_stepsBefore = m_steps = 0;
+    m_time = start ? start->state()->time : 0.0;
     m_port.load(m_scene, settings, start);
     m_restoreSerial = m_port.requestCount();
     applySettings(settings);
@@ -162,9 +163,10 @@ Project ProjectDraft::finish() const
 
 // ---- Regions ----------------------------------------------------------------------------------------
 
+// By time, not by counting regions: a deleted region leaves fewer rows than the script has looks.
 bool Document::canAddRegions() const
 {
-    return m_script && m_regions.size() >= m_script->looks().size();
+    return m_script && m_time >= m_script->lastDropTime();
 }
 
 QString Document::unusedName(const QString& base) const
@@ -198,6 +200,7 @@ void Document::takeFrame(const Frame& frame)
     if (frame.serial < m_restoreSerial)
         return;
     m_steps = m_stepsBefore + frame.steps;
+    m_time = frame.time;
     if (!m_script || frame.regions.size() <= m_regions.size())
         return;
     RegionTable grown = m_regions;
@@ -284,8 +287,11 @@ void Document::applySide(const CommandRecord& record, bool after)
     const EngineSettings& settings = after ? record.settingsAfter : record.settingsBefore;
     if (settings != m_settings)
         m_port.configure(settings);
-    m_port.restore(after ? record.after : record.before);
+    const StateSlotPtr& state = after ? record.after : record.before;
+    m_port.restore(state);
     m_restoreSerial = m_port.requestCount();
+    if (const StatePtr restored = state->state())  // else the next frame tells
+        m_time = restored->time;
     applySettings(settings);
     replaceRegions(table);
 }
@@ -352,6 +358,7 @@ void Document::reset()
 {
     pushSimulationCommand(tr("Reset"), [&] {
         m_stepsBefore = m_steps;  // the worker counts from zero again
+        m_time = 0.0;
         m_port.load(m_scene, m_settings, nullptr);
         m_restoreSerial = m_port.requestCount();
         const RegionTable starting(m_script->looks().begin(), m_script->looks().begin() + m_script->startingRegionCount());
@@ -400,6 +407,41 @@ bool Document::moveRegion(int from, int to)
     after.erase(after.begin() + from);
     after.insert(after.begin() + to, moved);
     pushRegionsCommand(tr("Reorder %1").arg(moved.name), std::move(after));
+    return true;
+}
+
+bool Document::deleteRegion(int index)
+{
+    if (index < 0 || index >= int(m_regions.size()) || !canAddRegions())
+        return false;
+    const RegionLook gone = m_regions[std::size_t(index)];
+    pushSimulationCommand(tr("Delete %1").arg(gone.name), [&] {
+        m_port.removeRegion(gone.simIndex);
+        m_restoreSerial = m_port.requestCount();  // older frames number the regions as before
+        RegionTable table = m_regions;
+        table.erase(table.begin() + index);
+        for (RegionLook& look : table)
+            if (look.simIndex > gone.simIndex)
+                --look.simIndex;
+        replaceRegions(table);
+    });
+    return true;
+}
+
+bool Document::duplicateRegion(int index, const std::vector<sim::Polygon>& contours)
+{
+    if (index < 0 || index >= int(m_regions.size()) || contours.empty() || !canAddRegions())
+        return false;
+    const RegionLook original = m_regions[std::size_t(index)];
+    pushSimulationCommand(tr("Duplicate %1").arg(original.name), [&] {
+        m_port.addRegion(contours);
+        RegionTable table = m_regions;
+        RegionLook copy = original;
+        copy.name = unusedName(tr("%1 copy").arg(original.name));
+        copy.simIndex = int(table.size());
+        table.insert(table.begin() + index + 1, copy);
+        replaceRegions(table);
+    });
     return true;
 }
 

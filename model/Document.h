@@ -34,6 +34,7 @@ private:
     Scene m_scene;
     RegionTable m_regions;
     std::int64_t m_steps = 0;
+    double m_time = 0.0;  // simulated seconds: of the newest frame, or of the state last restored
     std::vector<CommandRecord> m_records;  // the newest, if still open, ends at m_now
     int m_index = 0;
     StateSlotPtr m_now;
@@ -69,8 +70,8 @@ public:
     // same commands are done, which an index alone cannot tell after undo and a new command.
     std::uint64_t revision() const { return m_revision; }
 
-    // False while drops of the scene's own script are still to land: a region added then would
-    // take a simulation index that one of them is due to have.
+    // False while drops of the scene's own script are still to land: a region added (or deleted)
+    // then would take (or free) a simulation index that one of them is due to have.
     bool canAddRegions() const;
     // `base`, or `base` with a number appended, that no region has yet.
     QString unusedName(const QString& base) const;
@@ -89,6 +90,12 @@ public:
     bool setRegionName(int index, const QString& name);
     bool setRegionVisible(int index, bool visible);
     bool moveRegion(int from, int to);
+    // Takes the region and its ink out of the simulation (the regions above it in the simulation
+    // move down one index). Refused, like adding, while the scene's own drops are still to land.
+    bool deleteRegion(int index);
+    // A new region of `contours` (the region's ink as it is, moved where the copy should be) with
+    // the region's looks and a name of its own, just above it.
+    bool duplicateRegion(int index, const std::vector<sim::Polygon>& contours);
 
     // ---- From the worker. --------------------------------------------------------------------
     // Regions the scene's script has landed since get their looks here.
@@ -137,6 +144,7 @@ private:
     // Steps taken: those of the project it was opened from and those the worker counts since.
     std::int64_t m_stepsBefore = 0;
     std::int64_t m_steps = 0;
+    double m_time = 0.0;  // simulated seconds: of the newest frame, or of the state last restored
     std::uint64_t m_revision = 0;
     std::uint64_t m_restoreSerial = 0;  // frames older than the last restore or load are stale
     std::size_t m_historyBudget = defaultHistoryBudget;

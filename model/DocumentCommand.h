@@ -1,6 +1,7 @@
 #pragma once
 // The one undo command of the document. Every user action is one: a drop, a stroke, a text or SVG
-// insertion, a settings change, a reset (these act on the simulation) or a recolour, rename,
+// insertion, a region deleted or duplicated, a settings change, a reset (these act on the
+// simulation) or a recolour, rename,
 // visibility change or reorder (these only change region looks). A command is its record: the
 // region table, settings and simulation state at its start and at its end.
 #include "model/EngineSettings.h"

@@ -3,6 +3,7 @@
 // (docs/project-format.md), and the checks both apply to what is in them.
 #include "model/JsonFormat.h"
 #include "model/Project.h"
+#include "model/StateBlob.h"
 
 #include <QByteArrayView>
 
@@ -10,12 +11,16 @@
 
 namespace vf::model::projectformat {
 
-// The first line: the magic word, a space, the version, a newline.
+// The first line: the magic word, a space, the version, a newline. Version 2 packs the states'
+// arrays (StateEncoding::Packed) and deflates them; version 1 stored them plain, and still reads.
 inline constexpr QByteArrayView kMagic = "VFPROJ ";
-inline constexpr int kVersion = 1;
+inline constexpr int kVersion = 2;
+inline constexpr int kOldestVersion = 1;
 inline constexpr qsizetype kMaxHeaderLine = 32;
 // After the header line: the manifest's length in bytes, unsigned 64-bit little-endian.
 inline constexpr qsizetype kLengthBytes = 8;
+
+inline StateEncoding stateEncoding(int version) { return version == 1 ? StateEncoding::Plain : StateEncoding::Packed; }
 
 // qCompress stores the uncompressed length in 32 bits.
 inline constexpr std::int64_t kMaxRawBlob = 0xffffffffLL;

@@ -11,6 +11,10 @@
 #include <QJsonDocument>
 #include <QtEndian>
 
+#include <atomic>
+#include <exception>
+#include <thread>
+
 namespace vf::model {
 namespace {
 
@@ -118,7 +122,7 @@ void checkReferences(const Manifest& m)
 
 // ---- the blobs --------------------------------------------------------------------------------
 
-sim::SimulationState readState(const BlobRef& ref, QByteArrayView data, const KeyPath& where)
+sim::SimulationState readState(const BlobRef& ref, QByteArrayView data, StateEncoding encoding, const KeyPath& where)
 {
     const auto dataSize = qint64(data.size());
     if (ref.offset > dataSize || ref.length > dataSize - ref.offset)
@@ -133,16 +137,42 @@ sim::SimulationState readState(const BlobRef& ref, QByteArrayView data, const Ke
     const QByteArray raw = qUncompress(reinterpret_cast<const uchar*>(blob.data()), blob.size());
     if (raw.size() != ref.rawLength)
         where.fail(u"corrupt compressed data (it inflates to %1 bytes, not raw_length %2)"_s.arg(raw.size()).arg(ref.rawLength));
-    return decodeState(raw, where);
+    return decodeState(raw, encoding, where);
 }
 
-Project assemble(Manifest& m, QByteArrayView data)
+// Every state, each inflated and decoded on its own, on all cores at once. Where several fail,
+// the first in the list is reported, as one by one would.
+std::vector<std::shared_ptr<const sim::SimulationState>> readStates(const Manifest& m, QByteArrayView data, StateEncoding encoding)
 {
-    std::vector<std::shared_ptr<const sim::SimulationState>> states;
-    states.reserve(m.states.size());
-    for (std::size_t i = 0; i < m.states.size(); ++i)
-        states.push_back(std::make_shared<const sim::SimulationState>(
-            readState(m.states[i], data, KeyPath().key(u"states"_s).index(qsizetype(i)))));
+    const std::size_t n = m.states.size();
+    std::vector<std::shared_ptr<const sim::SimulationState>> states(n);
+    std::vector<std::exception_ptr> failures(n);
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t i = next++; i < n; i = next++) {
+            try {
+                states[i] = std::make_shared<const sim::SimulationState>(
+                    readState(m.states[i], data, encoding, KeyPath().key(u"states"_s).index(qsizetype(i))));
+            } catch (...) {
+                failures[i] = std::current_exception();
+            }
+        }
+    };
+    {
+        std::vector<std::jthread> helpers(std::min<std::size_t>(n, std::max(1u, std::thread::hardware_concurrency())) - 1);
+        for (std::jthread& helper : helpers)
+            helper = std::jthread(work);
+        work();
+    }
+    for (const std::exception_ptr& failure : failures)
+        if (failure)
+            std::rethrow_exception(failure);
+    return states;
+}
+
+Project assemble(Manifest& m, QByteArrayView data, StateEncoding encoding)
+{
+    const std::vector<std::shared_ptr<const sim::SimulationState>> states = readStates(m, data, encoding);
     auto shared = [&states](qint64 index) { return index == kNoState ? nullptr : states[std::size_t(index)]; };
 
     Project project = std::move(m.project);
@@ -161,6 +191,7 @@ Project assemble(Manifest& m, QByteArrayView data)
 // ---- the container ----------------------------------------------------------------------------
 
 struct Sections {
+    int version = kVersion;
     QByteArrayView manifest;
     QByteArrayView data;  // the state blobs; their offsets count from its start
 };
@@ -178,15 +209,15 @@ Sections split(QByteArrayView bytes)
     const int version = versionText.toInt(&isNumber);
     if (!isNumber)
         fail(u"the first line has no version number after \"%1\""_s.arg(QString::fromLatin1(kMagic.trimmed())));
-    if (version != kVersion)
-        fail(u"version %1 is not supported (this program reads version %2)"_s.arg(version).arg(kVersion));
+    if (version < kOldestVersion || version > kVersion)
+        fail(u"version %1 is not supported (this program reads versions %2 to %3)"_s.arg(version).arg(kOldestVersion).arg(kVersion));
     const QByteArrayView rest = bytes.sliced(lineEnd + 1);
     if (rest.size() < kLengthBytes)
         fail(u"the file is truncated: it ends before the manifest's length"_s);
     const quint64 length = qFromLittleEndian<quint64>(rest.data());
     if (length > quint64(rest.size() - kLengthBytes))
         fail(u"the file is truncated: the manifest is %1 bytes but only %2 follow"_s.arg(length).arg(rest.size() - kLengthBytes));
-    return {rest.sliced(kLengthBytes, qsizetype(length)), rest.sliced(kLengthBytes + qsizetype(length))};
+    return {version, rest.sliced(kLengthBytes, qsizetype(length)), rest.sliced(kLengthBytes + qsizetype(length))};
 }
 
 Manifest readManifest(QByteArrayView text)
@@ -214,7 +245,7 @@ ProjectReadResult parseProject(const QByteArray& bytes, const QString& sourceNam
     try {
         const Sections sections = split(bytes);
         Manifest manifest = readManifest(sections.manifest);
-        result.project = assemble(manifest, sections.data);
+        result.project = assemble(manifest, sections.data, stateEncoding(sections.version));
     } catch (const ReadError& error) {
         result.project = Project();
         result.error = oneLine(u"%1: %2: %3"_s.arg(sourceName, error.where, error.what));

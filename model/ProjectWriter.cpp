@@ -77,7 +77,7 @@ EncodedProject encodeProject(const Project& project)
 
     // The current state is usually the end of the last command: stored once if it is that state
     // bit for bit (operator== would also take -0.0 for 0.0).
-    const QByteArray current = encodeState(project.state);
+    const QByteArray current = encodeState(project.state, stateEncoding(kVersion));
     std::optional<qint64> currentIndex;
     QJsonArray states;
     qint64 offset = 0;
@@ -86,16 +86,15 @@ EncodedProject encodeProject(const Project& project)
             encoded.error = u"state %1 is %2 bytes, over the format's limit of %3"_s.arg(states.size()).arg(raw.size()).arg(kMaxRawBlob);
             return;
         }
-        // Stored, not deflated: a state's doubles shrink by about a fifth at ten times the cost of
-        // the whole save (docs/project-format.md, "Compression"). The zlib stream still carries
-        // its checksum, and readers take any level.
-        encoded.blobs.push_back(qCompress(raw, 0));
+        // The fastest level: packed, a state's byte planes are mostly runs, which every level
+        // finds (docs/project-format.md, "Compression").
+        encoded.blobs.push_back(qCompress(raw, 1));
         const qint64 length = encoded.blobs.back().size();
         states.append(QJsonObject{{u"offset"_s, offset}, {u"length"_s, length}, {u"raw_length"_s, qint64(raw.size())}});
         offset += length;
     };
     for (const sim::SimulationState* state : table.states()) {
-        const QByteArray raw = encodeState(*state);
+        const QByteArray raw = encodeState(*state, stateEncoding(kVersion));
         if (!currentIndex && *state == project.state && raw == current)
             currentIndex = qint64(states.size());
         addBlob(raw);

@@ -1,5 +1,7 @@
 #include "model/SceneScript.h"
 
+#include <limits>
+
 #include <QSet>
 
 #include <algorithm>
@@ -38,6 +40,11 @@ SceneScript::SceneScript(const Scene& scene)
         taken.insert(name);
         m_looks.push_back({name, m_drops[i].color, true, int(m_looks.size())});
     }
+}
+
+double SceneScript::lastDropTime() const
+{
+    return m_drops.empty() ? -std::numeric_limits<double>::infinity() : m_drops.back().time;
 }
 
 bool SceneScript::applyDrops(sim::Simulation& simulation, double from, double to) const

@@ -18,6 +18,8 @@ public:
     const RegionTable& looks() const { return m_looks; }
     int startingRegionCount() const { return m_startingRegions; }
     int dropCount() const { return int(m_drops.size()); }
+    // When the last drop lands (seconds of simulated time); -infinity without drops.
+    double lastDropTime() const;
 
     // Lands the drops due in (from, to], in order; returns whether one took the vertex count to
     // tracking.max_vertices.

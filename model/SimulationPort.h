@@ -26,6 +26,9 @@ public:
     virtual void restore(const StateSlotPtr& from) = 0;
 
     virtual void addRegion(const std::vector<sim::Polygon>& contours) = 0;
+    // Region `region` and its ink gone; the regions above it move down one index
+    // (model::withoutRegion).
+    virtual void removeRegion(int region) = 0;
     virtual void drop(sim::Vec2 center, double radius) = 0;
     // The pen moved from `from` to `to` in `seconds` of wall time; it acts during the next step.
     virtual void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds) = 0;

@@ -23,9 +23,90 @@ std::span<const double> flat(const std::vector<sim::Vec2>& points)
     return {reinterpret_cast<const double*>(points.data()), 2 * points.size()};
 }
 
+// A packed array (StateEncoding::Packed) stores each value's 64 bits as the difference from a
+// prediction of them: the value `stride` places before, or, with a reference array, the same place
+// there moved as the value `stride` places before moved from its own (a previous position is its
+// position displaced as the vertex before was: the flow is smooth along a contour). The first
+// `stride` values without a reference, with nothing before them, are stored as they are. Neighbouring vertices and grid cells are close, so the
+// differences are small numbers. The trailing zero bits that all of them share are shifted out (the
+// OpenCL backend's float32 values widened to double end in 29 of them), zigzag makes small negative
+// ones small too (0, -1, 1, -2... become 0, 1, 2, 3...), and the rest is stored as byte planes, lowest first,
+// leaving out planes that are zero throughout: every value's lowest byte, then every value's next
+// byte, and so on. Planes of close values are long runs that deflate shrinks well.
+struct Prediction {
+    std::size_t stride = 1;             // from the value this many places before, at least 1
+    std::span<const double> reference;  // where given: from the same place here, moved likewise
+};
+
+constexpr Prediction kPointPrediction{2, {}};  // x from the previous x, y from the previous y
+
+std::uint64_t bitsOf(double value) { return std::bit_cast<std::uint64_t>(value); }
+
+std::uint64_t zigzag(std::uint64_t difference) { return (difference << 1) ^ (0 - (difference >> 63)); }
+std::uint64_t unzigzag(std::uint64_t z) { return (z >> 1) ^ (0 - (z & 1)); }
+
+// The prediction for values[i] (i past the head): only values before i are read, so a reader can
+// predict from what it has decoded so far.
+std::uint64_t predicted(const double* values, std::size_t i, const Prediction& prediction)
+{
+    const std::size_t before = i - prediction.stride;  // wraps for the first values; not read then
+    if (prediction.reference.empty())
+        return bitsOf(values[before]);
+    // In the bits, wrapping: exact and the same on every machine, unlike arithmetic on doubles.
+    const std::uint64_t moved = i >= prediction.stride ? bitsOf(values[before]) - bitsOf(prediction.reference[before]) : 0;
+    return bitsOf(prediction.reference[i]) + moved;
+}
+
+// How many values at the start are stored as they are.
+std::size_t headOf(std::size_t n, const Prediction& prediction)
+{
+    return prediction.reference.empty() ? std::min(n, prediction.stride) : 0;
+}
+
+// Plane 0 is always stored, so that every value takes at least a byte: a reader can check a count
+// against the bytes left before allocating, as for plain arrays.
+uchar storedPlanes(std::uint64_t anyBits)
+{
+    uchar planes = 1;
+    for (int b = 1; b < 8; ++b)
+        if ((anyBits >> (8 * b)) & 0xff)
+            planes |= uchar(1 << b);
+    return planes;
+}
+
+// After the head, as BlobWriter::number writes them.
+void appendPacked(QByteArray& out, std::span<const double> values, const Prediction& prediction)
+{
+    const std::size_t head = headOf(values.size(), prediction), n = values.size() - head;
+    std::vector<std::uint64_t> residuals(n);
+    std::uint64_t anyBits = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        residuals[i] = bitsOf(values[head + i]) - predicted(values.data(), head + i, prediction);
+        anyBits |= residuals[i];
+    }
+    const int shift = anyBits == 0 ? 0 : std::countr_zero(anyBits);
+    anyBits = 0;
+    for (std::uint64_t& r : residuals) {
+        r = zigzag(std::uint64_t(std::int64_t(r) >> shift));  // exact: the bits shifted out are zero
+        anyBits |= r;
+    }
+    const uchar planes = storedPlanes(anyBits);
+    out.append(char(shift));
+    out.append(char(planes));
+    qsizetype at = out.size();
+    out.resize(at + qsizetype(n) * std::popcount(planes));
+    auto* bytes = reinterpret_cast<uchar*>(out.data());
+    for (int b = 0; b < 8; ++b) {
+        if (!(planes & (1 << b)))
+            continue;
+        for (std::size_t i = 0; i < n; ++i)
+            bytes[at++] = uchar(residuals[i] >> (8 * b));
+    }
+}
+
 class BlobWriter {
 public:
-    explicit BlobWriter(QByteArray& out) : m_out(out) {}
+    BlobWriter(QByteArray& out, StateEncoding encoding) : m_out(out), m_encoding(encoding) {}
 
     template <typename Int>
     void integer(Int value)
@@ -33,23 +114,27 @@ public:
         const Int little = qToLittleEndian(value);
         m_out.append(reinterpret_cast<const char*>(&little), sizeof little);
     }
-    void number(double value) { integer(std::bit_cast<std::uint64_t>(value)); }
+    void number(double value) { integer(bitsOf(value)); }
     // An array: its length in elements, then the elements.
-    void numbers(std::span<const double> values)
+    void numbers(std::span<const double> values, const Prediction& prediction = {})
     {
         integer(std::uint64_t(values.size()));
-        raw(values);
+        raw(values, prediction);
     }
-    void points(const std::vector<sim::Vec2>& points)
+    void points(const std::vector<sim::Vec2>& points, const Prediction& prediction = kPointPrediction)
     {
         integer(std::uint64_t(points.size()));
-        raw(flat(points));
+        raw(flat(points), prediction);
     }
 
 private:
-    void raw(std::span<const double> values)
+    void raw(std::span<const double> values, const Prediction& prediction)
     {
-        if constexpr (std::endian::native == std::endian::little) {
+        if (m_encoding == StateEncoding::Packed) {
+            for (double value : values.first(headOf(values.size(), prediction)))
+                number(value);
+            appendPacked(m_out, values, prediction);
+        } else if constexpr (std::endian::native == std::endian::little) {
             m_out.append(reinterpret_cast<const char*>(values.data()), qsizetype(values.size_bytes()));
         } else {
             for (double value : values)
@@ -58,11 +143,15 @@ private:
     }
 
     QByteArray& m_out;
+    StateEncoding m_encoding;
 };
 
 class BlobReader {
 public:
-    BlobReader(const QByteArray& bytes, KeyPath where) : m_bytes(bytes), m_where(std::move(where)) {}
+    BlobReader(const QByteArray& bytes, StateEncoding encoding, KeyPath where)
+        : m_bytes(bytes), m_encoding(encoding), m_where(std::move(where))
+    {
+    }
 
     template <typename Int>
     Int integer(const char* what)
@@ -80,17 +169,17 @@ public:
             fail(u"%1: %2 entries do not fit in the %3 bytes left"_s.arg(QLatin1String(what)).arg(n).arg(left()));
         return std::size_t(n);
     }
-    std::vector<double> numbers(const char* what)
+    std::vector<double> numbers(const char* what, const Prediction& prediction = {})
     {
-        std::vector<double> values(count(sizeof(double), what));
-        read(values.data(), values.size(), what);
+        std::vector<double> values(count(valueBytes(), what));
+        read(values.data(), values.size(), what, prediction);
         return values;
     }
-    std::vector<sim::Vec2> points(const char* what)
+    std::vector<sim::Vec2> points(const char* what, const Prediction& prediction = kPointPrediction)
     {
-        const std::size_t n = count(2 * sizeof(double), what);
+        const std::size_t n = count(2 * valueBytes(), what);
         std::vector<sim::Vec2> points(n);
-        read(reinterpret_cast<double*>(points.data()), 2 * n, what);
+        read(reinterpret_cast<double*>(points.data()), 2 * n, what, prediction);
         return points;
     }
     void finish() const
@@ -110,8 +199,14 @@ private:
         m_position += n;
         return data;
     }
-    void read(double* out, std::size_t n, const char* what)
+    // The fewest bytes a value of an array takes.
+    std::size_t valueBytes() const { return m_encoding == StateEncoding::Packed ? 1 : sizeof(double); }
+    void read(double* out, std::size_t n, const char* what, const Prediction& prediction)
     {
+        if (m_encoding == StateEncoding::Packed) {
+            readPacked(out, n, what, prediction);
+            return;
+        }
         const char* data = take(n * sizeof(double), what);
         if (n == 0)
             return;  // memcpy wants valid pointers even for no bytes
@@ -125,8 +220,31 @@ private:
             }
         }
     }
+    void readPacked(double* out, std::size_t count, const char* what, const Prediction& prediction)
+    {
+        const std::size_t head = headOf(count, prediction), n = count - head;
+        for (std::size_t i = 0; i < head; ++i)
+            out[i] = number(what);
+        const auto shift = integer<std::uint8_t>(what);
+        const auto planes = integer<std::uint8_t>(what);
+        if (shift > 63 || !(planes & 1))
+            fail(u"%1: a packed array's shift %2 or planes %3 are impossible"_s.arg(QLatin1String(what)).arg(shift).arg(planes));
+        if (!prediction.reference.empty() && prediction.reference.size() != count)
+            fail(u"%1: %2 values, but %3 to predict them from"_s.arg(QLatin1String(what)).arg(count).arg(prediction.reference.size()));
+        const auto* bytes = reinterpret_cast<const uchar*>(take(n * std::size_t(std::popcount(planes)), what));
+        std::vector<std::uint64_t> residuals(n, 0);
+        for (int b = 0; b < 8; ++b) {
+            if (!(planes & (1 << b)))
+                continue;
+            for (std::size_t i = 0; i < n; ++i)
+                residuals[i] |= std::uint64_t(*bytes++) << (8 * b);
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            out[head + i] = std::bit_cast<double>((unzigzag(residuals[i]) << shift) + predicted(out, head + i, prediction));
+    }
 
     const QByteArray& m_bytes;
+    StateEncoding m_encoding;
     KeyPath m_where;
     std::size_t m_position = 0;
 };
@@ -201,11 +319,11 @@ void checkState(const sim::SimulationState& state, const KeyPath& where)
 }
 
 // The layout is docs/project-format.md's "State blobs" table, field by field.
-QByteArray encodeState(const sim::SimulationState& state)
+QByteArray encodeState(const sim::SimulationState& state, StateEncoding encoding)
 {
     QByteArray out;
     out.reserve(qsizetype(state.bytes()));
-    BlobWriter blob(out);
+    BlobWriter blob(out, encoding);
     blob.number(state.time);
     blob.integer(std::int32_t(state.regionCount));
     blob.integer(std::uint64_t(state.contours.size()));
@@ -213,7 +331,7 @@ QByteArray encodeState(const sim::SimulationState& state)
         blob.integer(std::int32_t(c.region));
         blob.number(c.targetArea);
         blob.points(c.positions);
-        blob.points(c.previous);
+        blob.points(c.previous, {2, flat(c.positions)});
         blob.numbers(c.spacing);
     }
     blob.integer(std::uint8_t(state.fluid ? 1 : 0));
@@ -235,13 +353,13 @@ QByteArray encodeState(const sim::SimulationState& state)
     return out;
 }
 
-sim::SimulationState decodeState(const QByteArray& bytes, const KeyPath& where)
+sim::SimulationState decodeState(const QByteArray& bytes, StateEncoding encoding, const KeyPath& where)
 {
     // The smallest encoded contour: region, target area and three empty arrays.
     constexpr std::size_t kMinContourBytes = 4 + 8 + 3 * 8;
     constexpr std::size_t kStylusBytes = 6 * 8;
 
-    BlobReader blob(bytes, where);
+    BlobReader blob(bytes, encoding, where);
     sim::SimulationState state;
     state.time = blob.number("the time");
     state.regionCount = blob.integer<std::int32_t>("the region count");
@@ -250,7 +368,7 @@ sim::SimulationState decodeState(const QByteArray& bytes, const KeyPath& where)
         c.region = blob.integer<std::int32_t>("a contour's region");
         c.targetArea = blob.number("a contour's target area");
         c.positions = blob.points("a contour's positions");
-        c.previous = blob.points("a contour's previous positions");
+        c.previous = blob.points("a contour's previous positions", {2, flat(c.positions)});
         c.spacing = blob.numbers("a contour's spacing");
     }
     const auto hasFluid = blob.integer<std::uint8_t>("the fluid flag");

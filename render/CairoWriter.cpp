@@ -70,9 +70,10 @@ void setSource(cairo_t* context, const QColor& color)
 void draw(cairo_t* context, const model::Drawing& drawing, const ExportOptions& options)
 {
     const Page page = pageFor(drawing, options);
+    cairo_translate(context, page.left, page.top);
     if (options.background) {
         setSource(context, drawing.background);
-        cairo_rectangle(context, 0, 0, page.width, page.height);
+        cairo_rectangle(context, 0, 0, drawing.width * page.pointsPerUnit, drawing.height * page.pointsPerUnit);
         cairo_fill(context);
     }
     cairo_set_fill_rule(context, CAIRO_FILL_RULE_EVEN_ODD);

@@ -63,6 +63,8 @@ QString check(const model::Drawing& drawing, const ExportOptions& options)
         return QStringLiteral("canvas size %1 x %2 is not positive").arg(drawing.width).arg(drawing.height);
     if (!isPositive(options.pageWidth))
         return QStringLiteral("page width %1 pt is not positive").arg(options.pageWidth);
+    if (!std::isfinite(options.pageHeight) || options.pageHeight < 0)
+        return QStringLiteral("page height %1 pt is not positive (or 0 for the canvas's aspect)").arg(options.pageHeight);
     if (!isPositive(options.dpi))
         return QStringLiteral("resolution %1 dpi is not positive").arg(options.dpi);
     if (!std::isfinite(options.bezierTolerance) || options.bezierTolerance < 0)

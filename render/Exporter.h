@@ -9,7 +9,8 @@ namespace vf::render {
 struct ExportOptions {
     bool bezier = true;          // fit cubic Béziers (SVG/PDF/EPS); false writes vertices as they are
     double bezierTolerance = 0;  // canvas units; 0 picks the documented default
-    double pageWidth = 576.0;    // points (1/72 in) for the canvas width; height keeps the aspect
+    double pageWidth = 576.0;    // points (1/72 in)
+    double pageHeight = 0.0;     // points; 0: the canvas's aspect. Another aspect centres the canvas on the page
     double dpi = 150.0;          // PNG pixels per inch of the page
     bool background = true;      // paint the canvas background
 };

@@ -3,18 +3,26 @@
 #include "model/Drawing.h"
 #include "render/Exporter.h"
 
+#include <algorithm>
+
 namespace vf::render {
 
 struct Page {
     double width = 0;          // points (1/72 in)
-    double height = 0;         // points; keeps the canvas aspect
+    double height = 0;         // points
     double pointsPerUnit = 0;  // canvas units → points, the same along both axes
+    // Where the canvas starts on the page, points: 0 when the page has the canvas's aspect, else
+    // the margins that centre the canvas, scaled to fit, on the page.
+    double left = 0;
+    double top = 0;
 };
 
 inline Page pageFor(const model::Drawing& drawing, const ExportOptions& options)
 {
-    const double scale = options.pageWidth / drawing.width;
-    return {options.pageWidth, drawing.height * scale, scale};
+    const double height = options.pageHeight > 0 ? options.pageHeight : drawing.height * options.pageWidth / drawing.width;
+    const double scale = std::min(options.pageWidth / drawing.width, height / drawing.height);
+    return {options.pageWidth, height, scale, (options.pageWidth - drawing.width * scale) / 2,
+            (height - drawing.height * scale) / 2};
 }
 
 } // namespace vf::render

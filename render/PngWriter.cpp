@@ -52,13 +52,21 @@ QSize pixelSize(const model::Drawing& drawing, const ExportOptions& options)
 
 void paint(QImage& image, const model::Drawing& drawing, const ExportOptions& options)
 {
-    image.fill(options.background ? drawing.background : QColor(Qt::transparent));
+    // The canvas's pixels: the image less whole-pixel margins (none when the page has the
+    // canvas's aspect), both axes stretched to them, so the canvas covers them exactly. QPainter
+    // maps to pixels in doubles before it rasterises, so canvas units lose nothing here (unlike cairo).
+    const Page page = pageFor(drawing, options);
+    const double pixelsPerPoint = options.dpi / kPointsPerInch;
+    const double left = std::round(page.left * pixelsPerPoint), top = std::round(page.top * pixelsPerPoint);
+    const QRectF canvas(left, top, image.width() - 2 * left, image.height() - 2 * top);
+    image.fill(Qt::transparent);
     QPainter painter(&image);
+    if (options.background)
+        painter.fillRect(canvas, drawing.background);
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setPen(Qt::NoPen);
-    // Both axes stretched to whole pixels, so the canvas covers the image exactly. QPainter maps
-    // to pixels in doubles before it rasterises, so canvas units lose nothing here (unlike cairo).
-    painter.scale(image.width() / drawing.width, image.height() / drawing.height);
+    painter.translate(canvas.topLeft());
+    painter.scale(canvas.width() / drawing.width, canvas.height() / drawing.height);
     const PathStyle style = pathStyle(drawing, options);
     for (const model::DrawnRegion& region : drawing.regions) {
         if (!region.visible)

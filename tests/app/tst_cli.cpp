@@ -15,6 +15,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -270,7 +271,11 @@ private slots:
     void backendChoiceAndFallback_data();
     void backendChoiceAndFallback();
     void devicesListsSomething();
-    void helpExitsZero();
+    void helpOnEveryCommand_data();
+    void helpOnEveryCommand();
+    void versionOnEveryCommand_data();
+    void versionOnEveryCommand();
+    void renderWithoutOutputsWritesSvgBesideScene();
 
 private:
     QString path(const QString& name) const { return m_dir->filePath(name); }
@@ -368,6 +373,7 @@ void TestCli::badCommandLineIsRefused_data()
     QTest::newRow("devices with an argument") << QStringList{QStringLiteral("devices"), QStringLiteral("--all")}
                                               << QStringLiteral("devices takes no arguments");
     QTest::newRow("unknown command") << QStringList{QStringLiteral("frobnicate")} << QStringLiteral("frobnicate");
+    QTest::newRow("unknown program option") << QStringList{QStringLiteral("--bogus")} << QStringLiteral("unknown option --bogus");
 }
 
 void TestCli::badCommandLineIsRefused()
@@ -815,12 +821,64 @@ void TestCli::backendChoiceAndFallback()
     QCOMPARE(readJson(path(QStringLiteral("s.json")))[QStringLiteral("backend")].toString(), backend);
 }
 
-void TestCli::helpExitsZero()
+void TestCli::helpOnEveryCommand_data()
 {
-    const CliResult r = runCli({QStringLiteral("--help")});
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QStringList>("mentions");  // what the help must say
+    const QStringList program{QStringLiteral("vectorfluid render SCENE"), QStringLiteral("vectorfluid devices"),
+                              QStringLiteral("--version")};
+    const QStringList render{QStringLiteral("vectorfluid render SCENE"), QStringLiteral("--check-topology <K>"),
+                             QStringLiteral("--polyline"), QStringLiteral("beside it")};
+    const QStringList devices{QStringLiteral("usage: vectorfluid devices"), QStringLiteral("--help")};
+    for (const QString& help : {QStringLiteral("--help"), QStringLiteral("-h")}) {
+        QTest::addRow("vectorfluid %s", qPrintable(help)) << QStringList{help} << program;
+        QTest::addRow("render %s", qPrintable(help)) << QStringList{QStringLiteral("render"), help} << render;
+        QTest::addRow("render SCENE %s", qPrintable(help)) << QStringList{QStringLiteral("render"), kStirred, help} << render;
+        QTest::addRow("devices %s", qPrintable(help)) << QStringList{QStringLiteral("devices"), help} << devices;
+    }
+}
+
+// Help goes to stdout with exit 0, and nothing is run or written.
+void TestCli::helpOnEveryCommand()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QStringList, mentions);
+    const CliResult r = runCli(arguments);
+    QVERIFY2(r.exitCode == 0 && r.err.isEmpty(), qPrintable(describe(r)));
+    for (const QString& mention : mentions)
+        QVERIFY2(r.out.contains(mention.toUtf8()), qPrintable(mention + QStringLiteral(" is not in: ") + describe(r)));
+    QVERIFY(!QFileInfo::exists(QStringLiteral(VF_TEST_DATA "/scenes/stirred.svg")));
+}
+
+void TestCli::versionOnEveryCommand_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::newRow("vectorfluid") << QStringList{QStringLiteral("--version")};
+    QTest::newRow("render") << QStringList{QStringLiteral("render"), QStringLiteral("--version")};
+    QTest::newRow("devices") << QStringList{QStringLiteral("devices"), QStringLiteral("--version")};
+}
+
+void TestCli::versionOnEveryCommand()
+{
+    QFETCH(QStringList, arguments);
+    const CliResult r = runCli(arguments);
+    QVERIFY2(r.exitCode == 0 && r.err.isEmpty(), qPrintable(describe(r)));
+    QVERIFY2(QRegularExpression(QStringLiteral("^vectorfluid \\d+\\.\\d+\\.\\d+\n$")).match(QString::fromUtf8(r.out)).hasMatch(),
+             qPrintable(describe(r)));
+}
+
+// `render SCENE` alone writes SCENE's name with .svg beside the scene and says so.
+void TestCli::renderWithoutOutputsWritesSvgBesideScene()
+{
+    const QString scene = path(QStringLiteral("my scene.v1.vfscene"));
+    QVERIFY(QFile::copy(kStirred, scene));
+    const CliResult r = runCli({QStringLiteral("render"), scene, QStringLiteral("--steps"), QStringLiteral("15")});
     CHECK_OK(checkDone(r));
-    QVERIFY(r.out.contains("vectorfluid render SCENE"));
-    QVERIFY(r.out.contains("vectorfluid devices"));
+    const QString svgFile = path(QStringLiteral("my scene.v1.svg"));
+    QCOMPARE(QString::fromUtf8(r.out), QStringLiteral("wrote %1\n").arg(svgFile));
+    const test::ParsedSvg svg = test::parseSvg(svgFile);
+    QVERIFY2(svg.error.isEmpty(), qPrintable(svg.error));
+    QCOMPARE(test::regionPaths(svg).size(), std::size_t(kStirredRegions.size()));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

@@ -6,6 +6,7 @@
 #include "../render/SvgReadBack.h"
 #include "app/ClipboardExport.h"
 #include "app/ExportDialog.h"
+#include "app/Folders.h"
 
 #include <QCheckBox>
 #include <QClipboard>
@@ -112,6 +113,9 @@ private slots:
     void pngHasTheSizeTheResolutionImplies();
     void backgroundOffLeavesPngTransparent();
     void pageHeightFollowsTheCanvas();
+    void pageHeightIsFreeWithTheCanvasCentred();
+    void defaultPathIsInAnExistingFolderAndShownWhole();
+    void returnInThePathExports();
     void unwritablePathReportsAndWritesNothing();
     void formatAndSuffixStayInStep();
     void choicesAreRemembered();
@@ -261,13 +265,65 @@ void TestExportDialog::pageHeightFollowsTheCanvas()
 {
     const auto dialog = openDialog();
     QDoubleSpinBox* width = child<QDoubleSpinBox>(*dialog, "pageWidth");
-    const QLabel* height = child<QLabel>(*dialog, "pageHeight");
+    const QDoubleSpinBox* height = child<QDoubleSpinBox>(*dialog, "pageHeight");
+    QVERIFY(child<QCheckBox>(*dialog, "keepAspect")->isChecked());
+    QVERIFY(!height->isEnabled());
     typeInto(width, QStringLiteral("500"));
-    QCOMPARE(height->text(), QStringLiteral("250.00 pt"));
+    QCOMPARE(height->value(), 250.0);
     pick(child<QComboBox>(*dialog, "unit"), QStringLiteral("in"));  // the same page, shown in inches
     QCOMPARE(width->value(), 6.94);
-    QCOMPARE(height->text(), QStringLiteral("3.47 in"));
+    QCOMPARE(height->value(), 3.47);
     QCOMPARE(dialog->options().pageWidth, 500.0);
+    QCOMPARE(dialog->options().pageHeight, 0.0);
+}
+
+// Without the canvas's proportions the height is the user's: a square page of a 2:1 canvas has
+// the canvas centred, with empty bands above and below.
+void TestExportDialog::pageHeightIsFreeWithTheCanvasCentred()
+{
+    const auto dialog = openDialog();
+    QTest::mouseClick(child<QCheckBox>(*dialog, "keepAspect"), Qt::LeftButton);
+    QDoubleSpinBox* height = child<QDoubleSpinBox>(*dialog, "pageHeight");
+    QVERIFY(height->isEnabled());
+    typeInto(child<QDoubleSpinBox>(*dialog, "pageWidth"), QStringLiteral("200"));
+    typeInto(height, QStringLiteral("200"));
+    const QString file = path(QStringLiteral("square.png"));
+    typeInto(child<QLineEdit>(*dialog, "path"), file);
+    typeInto(child<QSpinBox>(*dialog, "dpi"), QStringLiteral("72"));  // enabled for PNG
+    QCOMPARE(dialog->options().pageHeight, 200.0);
+    QTest::mouseClick(child<QPushButton>(*dialog, "export"), Qt::LeftButton);
+    const QImage image(file);
+    QCOMPARE(image.size(), QSize(200, 200));
+    QCOMPARE(qAlpha(image.pixel(100, 10)), 0);    // the band above the canvas
+    QCOMPARE(qAlpha(image.pixel(100, 190)), 0);   // and below it
+    QCOMPARE(qAlpha(image.pixel(100, 100)), 255); // the canvas, its background painted
+}
+
+// The first export goes to the documents folder, or home where there is none; a remembered path
+// whose folder has gone goes there too. The box is wide enough for the whole path.
+void TestExportDialog::defaultPathIsInAnExistingFolderAndShownWhole()
+{
+    QSettings settings(QStringLiteral("vectorfluid"), QStringLiteral("vectorfluid"));
+    for (const QString& remembered : {QString(), path(QStringLiteral("gone/picture.pdf"))}) {
+        settings.setValue(QStringLiteral("export/path"), remembered);
+        const auto dialog = openDialog();
+        const QLineEdit* edit = child<QLineEdit>(*dialog, "path");
+        QCOMPARE(edit->text(), QDir(app::documentsFolder()).filePath(QStringLiteral("picture.svg")));
+        QVERIFY(QFileInfo(edit->text()).absoluteDir().exists());
+        QVERIFY2(edit->width() > edit->fontMetrics().horizontalAdvance(edit->text()),
+                 qPrintable(QStringLiteral("%1 px for a path of %2").arg(edit->width()).arg(edit->fontMetrics().horizontalAdvance(edit->text()))));
+    }
+}
+
+// Enter in the path box presses Export, the default button.
+void TestExportDialog::returnInThePathExports()
+{
+    const auto dialog = openDialog();
+    QLineEdit* edit = child<QLineEdit>(*dialog, "path");
+    typeInto(edit, path(QStringLiteral("entered.svg")));
+    QTest::keyClick(edit, Qt::Key_Return);
+    QVERIFY(QFileInfo::exists(path(QStringLiteral("entered.svg"))));
+    QCOMPARE(dialog->result(), int(QDialog::Accepted));
 }
 
 void TestExportDialog::unwritablePathReportsAndWritesNothing()

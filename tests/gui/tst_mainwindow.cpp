@@ -3,6 +3,7 @@
 // same). Each test checks the document, the undo stack and the geometry, not pixels.
 #include "FindChild.h"
 #include "app/ExportDialog.h"
+#include "app/Folders.h"
 #include "app/MainWindow.h"
 #include "app/Recovery.h"
 #include "model/ProjectFile.h"
@@ -12,8 +13,11 @@
 #include <glm/geometric.hpp>
 
 #include <QAction>
+#include <QFileDialog>
 #include <QHash>
 #include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -21,6 +25,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QXmlStreamReader>
 
 using namespace vf;
@@ -70,6 +75,19 @@ double largestMove(const Geometry& a, const Geometry& b)
         most = std::max(most, glm::length(centroid(a[r]) - centroid(b[r])));
     }
     return most;
+}
+
+// Runs `act` on the modal dialog of type T once one is open (the action that opens it blocks in
+// its own event loop until `act` closes it).
+template <typename T>
+void whenModal(std::function<void(T*)> act)
+{
+    QTimer::singleShot(10, qApp, [act] {
+        if (auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget()))
+            act(dialog);
+        else
+            whenModal<T>(act);
+    });
 }
 
 } // namespace
@@ -390,6 +408,58 @@ private slots:
         QCOMPARE(paths, 2);
     }
 
+    // Ctrl+E, a path, Export: the status bar names the file written.
+    void finishedExportShowsThePathInTheStatusBar()
+    {
+        MainWindow& w = *m_window;
+        const QString svg = m_dir.filePath(QStringLiteral("shown.svg"));
+        whenModal<ExportDialog>([svg](ExportDialog* dialog) {
+            test::child<QLineEdit>(*dialog, "path")->setText(svg);
+            QTest::mouseClick(test::child<QPushButton>(*dialog, "export"), Qt::LeftButton);
+        });
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_E));
+        QVERIFY(QFileInfo::exists(svg));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QDir::toNativeSeparators(svg)), qPrintable(w.statusBar()->currentMessage()));
+    }
+
+    // File ▸ Save As… by mouse: the dialog offers the scene's name in the documents folder (or
+    // home); after a save there, the next Save As starts in that folder.
+    void saveAsSuggestsTheSceneNameInTheLastFolder()
+    {
+        MainWindow& w = *m_window;
+        QSettings().remove(QStringLiteral("files/saveFolder"));
+        QString offered;
+        const auto saveAsByMouse = [&w, &offered](const QString& typed) {
+            whenModal<QFileDialog>([&offered, typed](QFileDialog* dialog) {
+                offered = dialog->selectedFiles().value(0);
+                if (typed.isEmpty())
+                    return dialog->reject();
+                auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+                QVERIFY(name);
+                name->selectAll();
+                QTest::keyClicks(name, typed);
+                QTest::keyClick(name, Qt::Key_Return);
+            });
+            QMenu* file = w.menuBar()->actions().front()->menu();
+            QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(file->menuAction()).center());
+            QAction* saveAs = *std::find_if(file->actions().begin(), file->actions().end(),
+                                            [](QAction* a) { return a->text().startsWith(QStringLiteral("Save &As")); });
+            QTest::mouseClick(file, Qt::LeftButton, {}, file->actionGeometry(saveAs).center());
+            QApplication::setActiveWindow(&w);  // the offscreen platform leaves the menu active
+        };
+        saveAsByMouse({});
+        QCOMPARE(offered, QDir(documentsFolder()).filePath(QStringLiteral("small.vfproj")));
+        QVERIFY(QFileInfo(offered).absoluteDir().exists());
+
+        const QString folder = m_dir.filePath(QStringLiteral("projects"));
+        QVERIFY(QDir().mkpath(folder));
+        saveAsByMouse(QDir(folder).filePath(QStringLiteral("first.vfproj")));
+        QTRY_VERIFY(QFileInfo::exists(QDir(folder).filePath(QStringLiteral("first.vfproj"))));
+        w.newDocument();
+        saveAsByMouse({});
+        QCOMPARE(offered, QDir(folder).filePath(QStringLiteral("Untitled.vfproj")));
+    }
+
     void switchingModesChangesViscosity()
     {
         MainWindow& w = *m_window;
@@ -497,6 +567,103 @@ private slots:
         QCOMPARE(w.document().undoStack().count(), 1);
         w.document().undoStack().undo();
         QCOMPARE(geometry(w).size(), std::size_t(2));
+    }
+
+    // Select the top region by clicking its row, press Delete: its ink goes, the other region's
+    // stays exactly; undo brings it back exactly. The context menu's Delete does the same.
+    void deleteKeyAndContextMenuDeleteRegionsUndoably()
+    {
+        MainWindow& w = *m_window;
+        QListView& view = w.regionView();
+        const Geometry before = geometry(w);
+        QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, view.visualRect(view.model()->index(0, 0)).center());
+        QTest::keyClick(&view, Qt::Key_Delete);
+        QCOMPARE(w.document().regions().size(), std::size_t(1));
+        QCOMPARE(w.document().regions()[0].name, QStringLiteral("ink"));
+        QCOMPARE(geometry(w), Geometry{before[0]});
+        QCOMPARE(w.document().undoStack().undoText(), QStringLiteral("Delete slab"));
+        QTest::keySequence(&w, QKeySequence::Undo);
+        QCOMPARE(w.document().regions().size(), std::size_t(2));
+        QCOMPARE(geometry(w), before);
+
+        // Right-click the bottom row ("ink") and choose Delete Region in the menu.
+        const QPoint inkRow = view.visualRect(view.model()->index(1, 0)).center();
+        QContextMenuEvent rightClick(QContextMenuEvent::Mouse, inkRow, view.viewport()->mapToGlobal(inkRow));
+        QApplication::sendEvent(view.viewport(), &rightClick);
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        QVERIFY(menu);
+        QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(test::child<QAction>(w, "deleteRegion")).center());
+        QCOMPARE(w.document().regions().size(), std::size_t(1));
+        QCOMPARE(w.document().regions()[0].name, QStringLiteral("slab"));
+        QCOMPARE(w.document().regions()[0].simIndex, 0);
+        QCOMPARE(geometry(w), Geometry{before[1]});
+        // The offscreen platform leaves the closed menu the active window; a user's next click in
+        // the window would make it active again.
+        QApplication::setActiveWindow(&w);
+        QTest::keySequence(&w, QKeySequence::Undo);
+        QCOMPARE(geometry(w), before);
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_Y));
+        QCOMPARE(geometry(w), Geometry{before[1]});
+    }
+
+    // Ctrl+D copies the selected region's ink, a little right of and below it, just above it in
+    // the paint order; undo takes the copy away.
+    void duplicateCopiesTheInkJustAboveTheOriginal()
+    {
+        MainWindow& w = *m_window;
+        QListView& view = w.regionView();
+        const Geometry before = geometry(w);
+        QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, view.visualRect(view.model()->index(1, 0)).center());
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_D));
+        const Geometry after = geometry(w);
+        QCOMPARE(after.size(), std::size_t(3));
+        const model::RegionTable& regions = w.document().regions();
+        QCOMPARE(regions.size(), std::size_t(3));
+        QCOMPARE(regions[1].name, QStringLiteral("ink copy"));
+        QCOMPARE(regions[1].color, regions[0].color);
+        QCOMPARE(regions[1].simIndex, 2);
+        QCOMPARE(view.currentIndex().data().toString(), QStringLiteral("ink copy"));  // the copy is selected
+        QCOMPARE(w.canvas().selectedRegion(), 2);
+        QVERIFY(std::abs(largestMove({before[0]}, {after[2]}) - 0.02 * std::sqrt(2.0)) < 1e-3);
+        QCOMPARE(w.document().undoStack().undoText(), QStringLiteral("Duplicate ink"));
+        QTest::keySequence(&w, QKeySequence::Undo);
+        QCOMPARE(geometry(w), before);
+    }
+
+    // V picks the Select tool; clicking ink selects its region in the dock and outlines it on the
+    // canvas; clicking bare water selects nothing.
+    void selectToolClickSelectsAndOutlinesTheRegion()
+    {
+        MainWindow& w = *m_window;
+        Canvas& canvas = w.canvas();
+        geometry(w);
+        canvas.setFocus();
+        QTest::keyClick(&w, Qt::Key_V);
+        QCOMPARE(canvas.tool(), Tool::Select);
+        const QPoint edge = canvas.mapFromCanvas({0.7, 0.5}).toPoint();  // on the ink disc's rim
+        const QImage unselected = canvas.grab().toImage();
+        QTest::mouseClick(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.5, 0.5}).toPoint());
+        QCOMPARE(w.regionView().currentIndex().data().toString(), QStringLiteral("ink"));
+        QCOMPARE(canvas.selectedRegion(), 0);
+        const QImage selected = canvas.grab().toImage();
+        bool outlined = false;
+        for (int dx = -2; dx <= 2; ++dx)
+            outlined |= selected.pixel(edge + QPoint(dx, 0)) != unselected.pixel(edge + QPoint(dx, 0));
+        QVERIFY2(outlined, "nothing drawn on the selected region's edge");
+        QTest::mouseClick(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.9, 0.9}).toPoint());
+        QVERIFY(!w.regionView().currentIndex().isValid());
+        QCOMPARE(canvas.selectedRegion(), -1);
+    }
+
+    void regionsDockShowsEightRows()
+    {
+        MainWindow& w = *m_window;
+        for (int i = 0; i < 8; ++i)
+            w.document().drop({0.1 + 0.1 * i, 0.9}, 0.02, Qt::red);
+        QListView& view = w.regionView();
+        QTRY_VERIFY(view.model()->rowCount() == 10);
+        QVERIFY2(view.viewport()->height() >= 8 * view.sizeHintForRow(0),
+                 qPrintable(QStringLiteral("%1 px for rows of %2").arg(view.viewport()->height()).arg(view.sizeHintForRow(0))));
     }
 
     void closingWithChangesAsks()

@@ -3,6 +3,7 @@
 // own drops, the history budget and the Regions model. The simulation here is a stand-in that
 // runs requests at once and whose state is a few numbers, so every request can be checked.
 #include "model/Document.h"
+#include "model/RegionRemoval.h"
 #include "model/RegionListModel.h"
 
 #include <QAbstractItemModelTester>
@@ -50,6 +51,7 @@ public:
         state = *from->state();
     }
     void addRegion(const std::vector<sim::Polygon>&) override { ++requests, addContour(); }
+    void removeRegion(int region) override { ++requests, state = withoutRegion(state, region); }
     void drop(sim::Vec2, double) override { ++requests, addContour(); }
     void stylus(sim::Vec2, sim::Vec2, double, double seconds) override { ++requests, state.time += seconds; }
     std::uint64_t requestCount() const override { return requests; }
@@ -59,6 +61,7 @@ public:
     {
         Frame f;
         f.serial = requests;
+        f.time = state.time;
         f.regions.resize(std::size_t(state.regionCount));
         return f;
     }
@@ -202,6 +205,7 @@ private slots:
         QCOMPARE(doc.undoStack().count(), 0);
 
         Frame stale = port.frame();
+        port.flow(0.1);
         port.drop({0.5, 0.5}, 0.05);  // the worker lands the script's drop while playing
         Frame landed = port.frame();
         landed.serial = stale.serial;  // no request of the document's came in between
@@ -211,6 +215,14 @@ private slots:
         QVERIFY(doc.canAddRegions());
         doc.drop({0.2, 0.2}, 0.05, Qt::red);
         QCOMPARE(doc.regions().back().simIndex, 2);
+        // Deleting regions leaves fewer than the scene has looks: drops still go in.
+        QVERIFY(doc.deleteRegion(0));
+        QVERIFY(doc.deleteRegion(0));
+        QCOMPARE(names(doc.regions()), QStringList({"drop"}));
+        QCOMPARE(doc.regions()[0].simIndex, 0);
+        QVERIFY(doc.canAddRegions());
+        doc.undoStack().undo();
+        doc.undoStack().undo();
 
         // A frame made before the document's last restore shows a replaced state: ignored.
         doc.undoStack().undo();

@@ -63,6 +63,30 @@ sim::SimulationState fluidState(double time, int regionCount)
     return s;
 }
 
+// `state` with each contour resampled to `vertices` float32 points on its ellipse, moved a little
+// since the previous ones, with a varying spacing and a smooth float32 fluid, as a snapshot of the
+// OpenCL backend holds them.
+sim::SimulationState float32State(sim::SimulationState state, int vertices)
+{
+    // Computed in float throughout: GCC 12 at -O2 was seen to drop the rounding of a double to
+    // float and back.
+    for (sim::Contour& c : state.contours) {
+        const auto centre = float(0.5 + 0.01 * c.region + state.time);
+        c = contour(c.region, vertices, 0.0);
+        for (std::size_t i = 0; i < c.positions.size(); ++i) {
+            const float a = 2.0f * std::numbers::pi_v<float> * float(i) / float(vertices);
+            const float x = centre + 0.1f * std::cos(a), y = 0.5f + 0.033f * std::sin(a);
+            c.positions[i] = {x, y};
+            c.previous[i] = {x - 1e-3f * std::sin(a), y + 1e-3f * std::cos(a)};
+            c.spacing[i] = 0.003f + 0.001f * std::sin(3.0f * a);
+        }
+    }
+    for (std::vector<double>* field : {&state.fluid->velocity.u, &state.fluid->velocity.v, &state.fluid->pressure})
+        for (std::size_t i = 0; i < field->size(); ++i)
+            (*field)[i] = std::sin(0.1f * float(i) + float(state.time));
+    return state;
+}
+
 sim::SimulationState analyticState()
 {
     sim::SimulationState s;
@@ -248,27 +272,43 @@ Corruption setManifest(const QString& path, const QJsonValue& value)
     };
 }
 
-// Replaces state 0's blob (the first in the data) by `raw` compressed, fixing the manifest.
-Corruption setState0(const std::function<QByteArray(QByteArray)>& edit)
+// Each state blob of `file` (a written project) re-encoded by `encode`, stored uncompressed, and
+// the manifest's offsets and lengths fixed; `header` replaces the first line.
+QByteArray reencodeStates(const QByteArray& file, const QByteArray& header,
+                          const std::function<QByteArray(qsizetype index, const QByteArray& packed)>& encode)
 {
-    return [edit](const QByteArray& good) {
-        FileParts parts = partsOf(good);
-        QJsonArray states = parts.manifest[u"states"_s].toArray();
-        const QJsonObject first = states[0].toObject();
-        const QByteArray raw = edit(qUncompress(parts.data.first(first[u"length"_s].toInteger())));
-        const QByteArray blob = qCompress(raw);
-        const qint64 shift = blob.size() - first[u"length"_s].toInteger();
-        parts.data = blob + parts.data.sliced(first[u"length"_s].toInteger());
-        for (qsizetype i = 0; i < states.size(); ++i) {
-            QJsonObject s = states[i].toObject();
-            if (i == 0)
-                s = {{u"offset"_s, 0}, {u"length"_s, qint64(blob.size())}, {u"raw_length"_s, qint64(raw.size())}};
-            else
-                s[u"offset"_s] = s[u"offset"_s].toInteger() + shift;
-            states[i] = s;
-        }
-        parts.manifest[u"states"_s] = states;
-        return fileOf(parts);
+    FileParts parts = partsOf(file);
+    parts.headerLine = header;
+    QJsonArray states = parts.manifest[u"states"_s].toArray();
+    QByteArray data;
+    for (qsizetype i = 0; i < states.size(); ++i) {
+        const QJsonObject s = states[i].toObject();
+        const QByteArray raw = encode(i, qUncompress(parts.data.sliced(s[u"offset"_s].toInteger(), s[u"length"_s].toInteger())));
+        const QByteArray blob = qCompress(raw, 0);
+        states[i] = QJsonObject{{u"offset"_s, qint64(data.size())}, {u"length"_s, qint64(blob.size())}, {u"raw_length"_s, qint64(raw.size())}};
+        data += blob;
+    }
+    parts.manifest[u"states"_s] = states;
+    parts.data = data;
+    return fileOf(parts);
+}
+
+// A written project as version 1 wrote it: the same manifest, the states' arrays plain.
+QByteArray asVersion1(const QByteArray& file)
+{
+    return reencodeStates(file, "VFPROJ 1\n", [](qsizetype, const QByteArray& packed) {
+        return encodeState(decodeState(packed, StateEncoding::Packed, json::KeyPath()), StateEncoding::Plain);
+    });
+}
+
+// Replaces state 0's blob by `edit` of its encoded bytes: plain in a version 1 file (whose layout
+// the edits poke at), or packed as written.
+Corruption setState0(const std::function<QByteArray(QByteArray)>& edit, StateEncoding encoding = StateEncoding::Plain)
+{
+    return [edit, encoding](const QByteArray& good) {
+        const QByteArray file = encoding == StateEncoding::Plain ? asVersion1(good) : good;
+        return reencodeStates(file, file.first(file.indexOf('\n') + 1),
+                              [&edit](qsizetype index, const QByteArray& raw) { return index == 0 ? edit(raw) : raw; });
     };
 }
 
@@ -353,6 +393,38 @@ private slots:
         const ProjectReadResult read = parseProject(fileOf(parts), u"deflated"_s);
         QVERIFY2(read.ok(), qPrintable(read.error));
         verifySameProject(read.project, written);
+    }
+
+    // Projects written before the states were packed read the same.
+    void version1ProjectsRead()
+    {
+        const Project written = fluidProject();
+        const QByteArray current = projectToBytes(written);
+        QVERIFY(current.startsWith("VFPROJ 2\n"));
+        const ProjectReadResult read = parseProject(asVersion1(current), u"old.vfproj"_s);
+        QVERIFY2(read.ok(), qPrintable(read.error));
+        verifySameProject(read.project, written);
+    }
+
+    // A history of states as the OpenCL backend leaves them (float32 values widened to double,
+    // smooth along the contours and the grid): packed and deflated, they take a fifth of the plain
+    // version 1 file or less (docs/BENCHMARKS.md has a played project's figures).
+    void packedStatesAreAFifthOfPlainOnes()
+    {
+        Project project = fluidProject();
+        for (HistoryEntry& entry : project.history) {
+            if (entry.before)
+                entry.before = std::make_shared<const sim::SimulationState>(float32State(*entry.before, 20000));
+            if (entry.after)
+                entry.after = std::make_shared<const sim::SimulationState>(float32State(*entry.after, 20000));
+        }
+        project.state = *project.history[2].after;
+        const QByteArray packed = projectToBytes(project), plain = asVersion1(packed);
+        QVERIFY(!packed.isEmpty());
+        QVERIFY2(packed.size() * 5 <= plain.size(), qPrintable(u"%1 bytes packed, %2 plain"_s.arg(packed.size()).arg(plain.size())));
+        const ProjectReadResult read = parseProject(packed, u"p"_s);
+        QVERIFY2(read.ok(), qPrintable(read.error));
+        verifySameProject(read.project, project);
     }
 
     void analyticProjectRoundTripsExactly()
@@ -452,8 +524,10 @@ private slots:
         row("empty", bytes([](const QByteArray&) { return QByteArray(); }), u"header: not a vectorfluid project"_s);
         row("a scene file", bytes([](const QByteArray&) { return QByteArray("{\"vectorfluid\": 1}"); }),
             u"header: not a vectorfluid project (it does not start with \"VFPROJ\")"_s);
-        row("newer version", bytes([](QByteArray b) { return b.replace(0, 9, "VFPROJ 2\n"); }),
-            u"header: version 2 is not supported (this program reads version 1)"_s);
+        row("newer version", bytes([](QByteArray b) { return b.replace(0, 9, "VFPROJ 3\n"); }),
+            u"header: version 3 is not supported (this program reads versions 1 to 2)"_s);
+        row("version 0", bytes([](QByteArray b) { return b.replace(0, 9, "VFPROJ 0\n"); }),
+            u"header: version 0 is not supported"_s);
         row("no version", bytes([](QByteArray b) { return b.replace(0, 9, "VFPROJ x\n"); }), u"header: the first line has no version number"_s);
         row("endless first line", bytes([](const QByteArray&) { return QByteArray("VFPROJ ").append(40, '1'); }),
             u"header: the first line does not end within 32 bytes"_s);
@@ -526,15 +600,25 @@ private slots:
         row("lengths disagree", setState0([](const QByteArray&) {
                 sim::SimulationState s = fluidState(0.0, 1);
                 s.contours[0].spacing.pop_back();
-                return encodeState(s);
+                return encodeState(s, StateEncoding::Plain);
             }),
             u"states[0]: contour 0 has 5 positions but 5 previous positions and 4 spacings (they must agree)"_s);
         row("velocity off the grid", setState0([](const QByteArray&) {
                 sim::SimulationState s = fluidState(0.0, 1);
                 s.fluid->velocity.nx = 5;
-                return encodeState(s);
+                return encodeState(s, StateEncoding::Plain);
             }),
             u"states[0]: the velocity u has 28 values, expected 24"_s);
+        row("packed previous positions of another length", setState0([](const QByteArray&) {
+                sim::SimulationState s = fluidState(0.0, 1);
+                s.contours[0].previous.pop_back();
+                return encodeState(s, StateEncoding::Packed);
+            }, StateEncoding::Packed),
+            u"states[0]: a contour's previous positions: 8 values, but 10 to predict them from"_s);
+        // Contour 0's positions: count, the first point as it is, then the shift and the planes.
+        row("packed array without plane 0", setState0([](QByteArray raw) { return poke(raw, kContour0XAt + 16 + 1, quint8(0xfe)); },
+                                                      StateEncoding::Packed),
+            u"states[0]: a contour's positions: a packed array's shift 0 or planes 254 are impossible"_s);
     }
 
     void brokenFilesGiveOneLine()

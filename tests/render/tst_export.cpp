@@ -154,6 +154,7 @@ private slots:
     void svgLargeRegionStreams();
 
     void pdfPassesQpdfAndPdftoppm();
+    void pageOfAnotherAspectCentresTheCanvas();
     void epsHasPageBoundingBoxAndRendersInGhostscript_data();
     void epsHasPageBoundingBoxAndRendersInGhostscript();
 
@@ -355,6 +356,26 @@ void TestExport::pdfPassesQpdfAndPdftoppm()
     QCOMPARE(image.size(), QSize(288, 216)); // 576 x 432 pt at half a pixel per point
     const QString mismatch = checkProbes(image, probes(kBackground), drawing);
     QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+}
+
+// A square page for the 4:3 canvas: the canvas fills the width, centred between white bands.
+void TestExport::pageOfAnotherAspectCentresTheCanvas()
+{
+    REQUIRE_TOOL(pdftoppm, "pdftoppm");
+    const QString file = path(QStringLiteral("square.pdf"));
+    render::ExportOptions options;
+    options.pageHeight = options.pageWidth;
+    EXPORT_OK(probeDrawing(), file, options);
+    const Run raster = run(pdftoppm, {QStringLiteral("-png"), QStringLiteral("-r"), QStringLiteral("36"),
+                                      QStringLiteral("-singlefile"), file, path(QStringLiteral("square"))});
+    QVERIFY2(raster.exitCode == 0, raster.output.constData());
+    const QImage image(path(QStringLiteral("square.png")));
+    QCOMPARE(image.size(), QSize(288, 288));  // 576 pt square at half a pixel per point
+    // The canvas is 432 pt tall: 72 pt (36 px) bands above and below.
+    QCOMPARE(image.pixelColor(2, 30), QColor(Qt::white));
+    QCOMPARE(image.pixelColor(2, 258), QColor(Qt::white));
+    QCOMPARE(image.pixelColor(2, 40), kBackground);
+    QCOMPARE(image.pixelColor(2, 248), kBackground);
 }
 
 void TestExport::epsHasPageBoundingBoxAndRendersInGhostscript_data()
