@@ -58,7 +58,7 @@ model::Scene blankScene()
 {
     model::Scene scene;
     scene.canvas.background = QColor(0xf4, 0xee, 0xe2);
-    scene.flow.viscosity = model::marblingViscosity;
+    model::applyPreset(scene.flow, model::FluidMode::Marbling);
     scene.time.dt = 0.005;
     return scene;
 }
@@ -240,7 +240,7 @@ void MainWindow::createActions()
         playback->addAction(action);
         connect(action, &QAction::triggered, this, [this, mode] {
             model::EngineSettings s = m_document.settings();
-            s.flow.viscosity = model::viscosityOf(mode);
+            model::applyPreset(s.flow, mode);
             m_document.setSettings(s);
         });
     }
@@ -340,8 +340,8 @@ void MainWindow::connectDocument()
         m_panel->setSettings(s);
         QSettings().setValue(backendKey, s.backend);
         QSettings().setValue(deviceKey, s.device);
-        m_marblingAction->setChecked(s.flow.viscosity == model::marblingViscosity);
-        m_shapeDesignAction->setChecked(s.flow.viscosity == model::shapeDesignViscosity);
+        m_marblingAction->setChecked(model::isPreset(s.flow, model::FluidMode::Marbling));
+        m_shapeDesignAction->setChecked(model::isPreset(s.flow, model::FluidMode::ShapeDesign));
     });
     connect(&m_document, &model::Document::historyTrimmed, this, [this](int commands) {
         statusBar()->showMessage(tr("History memory budget reached: the oldest %n step(s) can no longer be undone", nullptr, commands), 10000);
@@ -358,7 +358,7 @@ void MainWindow::connectDocument()
     });
     connect(m_canvas, &Canvas::strokeStarted, this, [this] { m_document.beginStroke(); });
     connect(m_canvas, &Canvas::strokeMoved, this, [this](QPointF from, QPointF to, double seconds) {
-        m_document.stroke(toVec(from), toVec(to), m_stylusRadius, seconds);
+        m_document.stroke(toVec(from), toVec(to), m_document.settings().flow.stylusRadius, seconds);
     });
     connect(m_canvas, &Canvas::textRequested, this, &MainWindow::askText);
     connect(m_canvas, &Canvas::regionClicked, m_regionsDock, &RegionsDock::selectRegion);

@@ -109,7 +109,6 @@ private:
     int m_opened = 0;  // counts documents opened, so a late save result finds its own
     QString m_sceneName;  // of the scene file the document was opened from; the title shows it
     QColor m_inkColor = QColor(0x1d, 0x35, 0x57);
-    double m_stylusRadius = 0.03;
     QFont m_textFont = QFont(QStringLiteral("DejaVu Sans"));
     Ask m_ask;
     Report m_report;

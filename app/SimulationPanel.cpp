@@ -26,6 +26,7 @@ namespace limits = model::limits;
 constexpr int kMinVertices = 3;       // a contour has at least 3; the scene reader's minimum
 constexpr double kMaxViscosity = 10;  // far beyond shape design; above it a stroke moves nothing
 constexpr int kDecimals = 6;          // enough for marbling's 5e-4 and fine spacings
+constexpr double kMaxStylusResponse = 10;  // s; far slower than any stroke
 
 const QString kReference = QStringLiteral("reference");
 const QString kOpenCl = QStringLiteral("opencl");
@@ -105,6 +106,10 @@ QWidget* SimulationPanel::createFlowGroup()
 
     m_viscosity = decadeSpinBox("viscosity", 0.0, kMaxViscosity);
     m_viscosity->setToolTip(tr("Kinematic viscosity in canvas units²/s"));
+    m_stylusRadius = decadeSpinBox("stylusRadius", std::pow(10.0, -kDecimals), limits::maxCanvasSize);
+    m_stylusRadius->setToolTip(tr("The radius of a stylus stroke, in canvas units"));
+    m_stylusResponse = decadeSpinBox("stylusResponse", 0.0, kMaxStylusResponse);
+    m_stylusResponse->setToolTip(tr("Seconds the water under the stylus takes to follow it; 0: at once"));
     m_gridX = committingSpinBox<QSpinBox>("gridX");
     m_gridY = committingSpinBox<QSpinBox>("gridY");
     auto* gridRow = new QHBoxLayout;
@@ -121,6 +126,8 @@ QWidget* SimulationPanel::createFlowGroup()
     m_flowForm = new QFormLayout(group);
     m_flowForm->addRow(tr("Mode:"), modeRow);
     m_flowForm->addRow(tr("Viscosity:"), m_viscosity);
+    m_flowForm->addRow(tr("Stylus radius:"), m_stylusRadius);
+    m_flowForm->addRow(tr("Stylus response:"), m_stylusResponse);
     m_flowForm->addRow(tr("Grid:"), gridRow);
     m_flowForm->addRow(tr("u(x, y, t):"), m_flowU);
     m_flowForm->addRow(tr("v(x, y, t):"), m_flowV);
@@ -172,10 +179,14 @@ QWidget* SimulationPanel::createBackendGroup()
 void SimulationPanel::connectEdits()
 {
     connect(m_mode, &QButtonGroup::idClicked, this, [this](int mode) {
-        edit([&](model::EngineSettings& s) { s.flow.viscosity = model::viscosityOf(model::FluidMode(mode)); });
+        edit([&](model::EngineSettings& s) { model::applyPreset(s.flow, model::FluidMode(mode)); });
     });
     connect(m_viscosity, &QDoubleSpinBox::valueChanged, this,
             [this](double value) { edit([&](model::EngineSettings& s) { s.flow.viscosity = value; }); });
+    connect(m_stylusRadius, &QDoubleSpinBox::valueChanged, this,
+            [this](double value) { edit([&](model::EngineSettings& s) { s.flow.stylusRadius = value; }); });
+    connect(m_stylusResponse, &QDoubleSpinBox::valueChanged, this,
+            [this](double value) { edit([&](model::EngineSettings& s) { s.flow.stylusResponse = value; }); });
     connect(m_gridX, &QSpinBox::valueChanged, this,
             [this](int value) { edit([&](model::EngineSettings& s) { s.flow.gridX = value; }); });
     connect(m_gridY, &QSpinBox::valueChanged, this,
@@ -223,7 +234,8 @@ void SimulationPanel::showSettings()
     const model::FlowSpec& flow = m_settings.flow;
     const bool fluid = flow.type == model::FlowSpec::Type::Fluid;
     // An analytic flow prescribes the velocity: it has no viscosity or grid to edit.
-    for (QWidget* fluidOnly : std::initializer_list<QWidget*>{m_marbling, m_shapeDesign, m_viscosity, m_gridX, m_gridY})
+    for (QWidget* fluidOnly : std::initializer_list<QWidget*>{m_marbling, m_shapeDesign, m_viscosity, m_stylusRadius,
+                                                               m_stylusResponse, m_gridX, m_gridY})
         fluidOnly->setEnabled(fluid);
     m_flowForm->setRowVisible(m_flowU, !fluid);
     m_flowForm->setRowVisible(m_flowV, !fluid);
@@ -231,6 +243,8 @@ void SimulationPanel::showSettings()
     m_flowV->setText(flow.v);
     showMode();
     m_viscosity->setValue(flow.viscosity);
+    m_stylusRadius->setValue(flow.stylusRadius);
+    m_stylusResponse->setValue(flow.stylusResponse);
     m_gridX->setValue(flow.gridX);
     m_gridY->setValue(flow.gridY);
 
@@ -246,13 +260,13 @@ void SimulationPanel::showSettings()
     m_showing = false;
 }
 
-// The mode is shown only for its preset viscosity exactly; any other value is a custom fluid.
+// A mode is shown checked only while the fluid is its preset exactly; other values are a custom
+// fluid, shown with neither checked (both stay enabled, to pick one again).
 void SimulationPanel::showMode()
 {
-    const double viscosity = m_settings.flow.viscosity;
     m_mode->setExclusive(false);  // an exclusive group cannot show neither button checked
-    m_marbling->setChecked(viscosity == model::viscosityOf(model::FluidMode::Marbling));
-    m_shapeDesign->setChecked(viscosity == model::viscosityOf(model::FluidMode::ShapeDesign));
+    m_marbling->setChecked(model::isPreset(m_settings.flow, model::FluidMode::Marbling));
+    m_shapeDesign->setChecked(model::isPreset(m_settings.flow, model::FluidMode::ShapeDesign));
     m_mode->setExclusive(true);
 }
 

@@ -53,6 +53,8 @@ private:
     QRadioButton* m_marbling = nullptr;
     QRadioButton* m_shapeDesign = nullptr;
     QDoubleSpinBox* m_viscosity = nullptr;
+    QDoubleSpinBox* m_stylusRadius = nullptr;
+    QDoubleSpinBox* m_stylusResponse = nullptr;
     QSpinBox* m_gridX = nullptr;
     QSpinBox* m_gridY = nullptr;
     QLineEdit* m_flowU = nullptr;

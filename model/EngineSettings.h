@@ -9,16 +9,41 @@ namespace vf::model {
 
 // The two fluid modes of the paper: marbling (§5.1, low viscosity, motion persists) and shape
 // design (§5.2, high viscosity, motion dies right after each stroke). Marbling is the
-// sumi-nagashi demo's. For shape design, the slowest mode of a unit canvas (k² = 2π²) decays at
-// ν·2π² per second: at ν = 1 that is e^-4 within 0.2 s, so the ink stops once the pen does (the
-// stylus force acts after the diffusion, so the stroke itself still carries the ink).
+// sumi-nagashi demo's. Shape design must do two things at once: carry the ink under the pen
+// along with it, and stop within about half a second of the pen (tst_shapedesign measures both).
+// A viscosity high enough to stop the motion (ν = 0.1: the flow a broad pen leaves decays at about
+// ν/r² = 20 per second) also spreads the pen's push over its neighbourhood within a step, so the
+// pen sets the fluid under it to its own velocity (a response of 1 ms, against marbling's 20 ms
+// of gentle drag), and a broad pen keeps the carried ink inside its reach.
 enum class FluidMode { Marbling, ShapeDesign };
-inline constexpr double marblingViscosity = 5e-4;
-inline constexpr double shapeDesignViscosity = 1.0;
 
-inline double viscosityOf(FluidMode mode)
+struct FluidPreset {
+    double viscosity;
+    double stylusResponse;
+    double stylusRadius;
+};
+inline constexpr FluidPreset marblingPreset{5e-4, 0.02, 0.03};
+inline constexpr FluidPreset shapeDesignPreset{0.1, 0.001, 0.07};
+
+inline const FluidPreset& presetOf(FluidMode mode)
 {
-    return mode == FluidMode::Marbling ? marblingViscosity : shapeDesignViscosity;
+    return mode == FluidMode::Marbling ? marblingPreset : shapeDesignPreset;
+}
+
+inline void applyPreset(FlowSpec& flow, FluidMode mode)
+{
+    const FluidPreset& preset = presetOf(mode);
+    flow.viscosity = preset.viscosity;
+    flow.stylusResponse = preset.stylusResponse;
+    flow.stylusRadius = preset.stylusRadius;
+}
+
+// Whether the flow is the mode's preset exactly; any other values are a custom fluid.
+inline bool isPreset(const FlowSpec& flow, FluidMode mode)
+{
+    const FluidPreset& preset = presetOf(mode);
+    return flow.viscosity == preset.viscosity && flow.stylusResponse == preset.stylusResponse
+        && flow.stylusRadius == preset.stylusRadius;
 }
 
 struct EngineSettings {

@@ -31,6 +31,9 @@ struct FlowSpec {
     // analytic: muparser expressions in x, y, t (canvas units, seconds)
     QString u;
     QString v;
+    // fluid: how a stylus stirs it
+    double stylusResponse = 0.02;  // s; sim::FluidSettings::stylusResponse
+    double stylusRadius = 0.03;    // canvas units: the radius of the strokes drawn in the app
 
     friend bool operator==(const FlowSpec&, const FlowSpec&) = default;
 };

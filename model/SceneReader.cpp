@@ -76,6 +76,8 @@ const Key<FlowSpec> fluidKeys[] = {
     {u"type"_s, false, readFlowType},
     {u"grid"_s, false, readGrid},
     {u"viscosity"_s, false, [](const Field& f, FlowSpec& flow) { flow.viscosity = f.nonNegative(); }},
+    {u"stylus_response"_s, false, [](const Field& f, FlowSpec& flow) { flow.stylusResponse = f.nonNegative(); }},
+    {u"stylus_radius"_s, false, [](const Field& f, FlowSpec& flow) { flow.stylusRadius = length(f); }},
     {u"advection"_s, false, [](const Field& f, FlowSpec& flow) {
          flow.maccormack = f.choice<bool>({{u"maccormack"_s, true}, {u"semi-lagrangian"_s, false}});
      }},

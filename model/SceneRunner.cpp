@@ -14,6 +14,7 @@ sim::SimulationSettings simulationSettings(const Scene& scene)
     s.fluid.width = scene.canvas.width;
     s.fluid.height = scene.canvas.height;
     s.fluid.viscosity = scene.flow.viscosity;
+    s.fluid.stylusResponse = scene.flow.stylusResponse;
     s.fluid.advection = scene.flow.maccormack ? sim::Advection::MacCormack : sim::Advection::SemiLagrangian;
     s.u = scene.flow.u.toStdString();
     s.v = scene.flow.v.toStdString();

@@ -35,6 +35,8 @@ QJsonObject flowToJson(const FlowSpec& flow)
     return {{u"type"_s, u"fluid"_s},
             {u"grid"_s, QJsonArray{flow.gridX, flow.gridY}},
             {u"viscosity"_s, flow.viscosity},
+            {u"stylus_response"_s, flow.stylusResponse},
+            {u"stylus_radius"_s, flow.stylusRadius},
             {u"advection"_s, flow.maccormack ? u"maccormack"_s : u"semi-lagrangian"_s}};
 }
 

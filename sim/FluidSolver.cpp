@@ -30,9 +30,6 @@
 namespace vf::sim {
 namespace {
 
-// The stylus drags the fluid under it toward the pen velocity with this response time (s): short,
-// so the pen acts almost at once, but finite, so one step never overshoots the pen velocity.
-constexpr double kStylusResponseTime = 0.02;
 // Viscosity solves stop at this max-norm residual relative to the max |u| being diffused: far
 // below anything visible, and the projection that follows fixes the divergence anyway.
 constexpr double kViscosityRelativeTolerance = 1e-8;
@@ -167,6 +164,8 @@ void validate(const FluidSettings& s)
         fail("canvas size must be positive and finite");
     if (!(s.viscosity >= 0.0) || !std::isfinite(s.viscosity))
         fail("viscosity must be zero or positive and finite");
+    if (!(s.stylusResponse >= 0.0) || !std::isfinite(s.stylusResponse))
+        fail("stylus response must be zero or positive and finite");
     if (!(s.pressureTolerance > 0.0) || !std::isfinite(s.pressureTolerance))
         fail("pressure tolerance must be positive and finite");
 }
@@ -211,6 +210,11 @@ void FluidSolver::setPressure(const std::vector<double>& pressure)
     m_pressure = pressure;
 }
 
+double stylusStrength(const FluidSettings& settings, double dt)
+{
+    return 1.0 - std::exp(-dt / settings.stylusResponse);  // 1 for a response of 0
+}
+
 void FluidSolver::addStylus(Vec2 from, Vec2 to, double radius, double duration)
 {
     // A pen that takes no time (or a NaN time) to move jumped: it carries no velocity, so no force.
@@ -239,12 +243,12 @@ void FluidSolver::step(double dt)
 }
 
 // The pen drags the fluid within `radius` of its path toward its own velocity, relaxing with time
-// constant kStylusResponseTime: u += w (v_pen - u) (1 - exp(-dt / tau)), w = (1 - (d/r)^2)^2. The
+// constant tau = stylusResponse: u += w (v_pen - u) (1 - exp(-dt / tau)), w = (1 - (d/r)^2)^2. The
 // force therefore scales with how fast the pen moves, and a slow pen barely stirs; the exponential
-// form stays bounded (never past v_pen) for any dt.
+// form stays bounded (never past v_pen) for any dt and any tau, 0 included.
 void FluidSolver::applyStylus(const StylusSegment& segment, double dt)
 {
-    const double strength = 1.0 - std::exp(-dt / kStylusResponseTime);
+    const double strength = stylusStrength(m_settings, dt);
     const double r2 = segment.radius * segment.radius;
     const Vec2 lo = glm::min(segment.from, segment.to) - segment.radius;
     const Vec2 hi = glm::max(segment.from, segment.to) + segment.radius;

@@ -19,6 +19,9 @@ struct FluidSettings {
     double width = 1.0;       // canvas size in canvas units
     double height = 1.0;
     double viscosity = 5e-4;  // kinematic, canvas units^2 / s; 0 allowed
+    // How fast the stylus drags the fluid under it to its own velocity (s, see addStylus): short
+    // enough that the pen acts almost at once; 0 sets the fluid under the pen to its velocity.
+    double stylusResponse = 0.02;
     Advection advection = Advection::MacCormack;
     double pressureTolerance = 1e-8;  // see FluidSolver.cpp for the norm it is measured in
 };
@@ -37,6 +40,10 @@ struct MacVelocity {
     friend bool operator==(const MacVelocity&, const MacVelocity&) = default;
 };
 
+// The share of the way from the fluid's velocity to the pen's that one step of dt covers under the
+// pen's centre (both solvers use it).
+double stylusStrength(const FluidSettings& settings, double dt);
+
 class FluidSolver {
 public:
     explicit FluidSolver(const FluidSettings& settings);
@@ -44,7 +51,8 @@ public:
     const FluidSettings& settings() const { return m_settings; }
 
     // A stylus moved from `from` to `to` during `duration` seconds with radius `radius`. Its force
-    // is applied in the next step() (splatted along the segment, strength from the pen's speed).
+    // is applied in the next step(): the fluid within the radius relaxes toward the pen's velocity
+    // with time constant settings().stylusResponse.
     void addStylus(Vec2 from, Vec2 to, double radius, double duration);
 
     // One step: advection, implicit viscosity, stylus forces, pressure projection.

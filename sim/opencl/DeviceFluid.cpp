@@ -59,8 +59,6 @@ constexpr int kCoarsestSweeps = 20;
 constexpr int kCoarsestSize = 16;
 constexpr int kTailCells = 4096;
 constexpr int kCheckEvery = 2;
-// As in sim/FluidSolver.cpp.
-constexpr double kStylusResponseTime = 0.02;
 // Viscosity solves stop at this max-norm residual relative to max |u*|: 1e-8 in the double solver,
 // here a few float32 roundoffs; the projection that follows fixes the divergence anyway.
 constexpr float kViscosityRelativeTolerance = 1e-6f;
@@ -724,7 +722,7 @@ void DeviceFluid::Impl::applyStylus(const StylusSegment& segment, double dt)
     cl_uint index = 6;
     for (const double value : {segment.from.x, segment.from.y, segment.to.x, segment.to.y,
                                1.0 / (segment.radius * segment.radius), segment.velocity.x,
-                               segment.velocity.y, 1.0 - std::exp(-dt / kStylusResponseTime)})
+                               segment.velocity.y, stylusStrength(settings, dt)})
         stylus.kernel.setArg(index++, float(value));
     enqueue(queue, stylus);
 }

@@ -47,7 +47,7 @@ EngineSettings testSettings()
     EngineSettings settings;
     settings.flow.gridX = 96;
     settings.flow.gridY = 48;
-    settings.flow.viscosity = model::marblingViscosity;
+    model::applyPreset(settings.flow, model::FluidMode::Marbling);
     settings.tracking.maxSpacing = 0.008;
     settings.tracking.adaptive = false;
     settings.tracking.proximity = true;
@@ -104,7 +104,11 @@ const std::vector<Edit>& edits()
         {"viscosity", [](Panel& p) { typeAndCommit(child<QDoubleSpinBox>(p, "viscosity"), QStringLiteral("0.02")); },
          [](EngineSettings& s) { s.flow.viscosity = 0.02; }},
         {"shape design", [](Panel& p) { QTest::mouseClick(child<QRadioButton>(p, "shapeDesign"), Qt::LeftButton); },
-         [](EngineSettings& s) { s.flow.viscosity = model::shapeDesignViscosity; }},
+         [](EngineSettings& s) { model::applyPreset(s.flow, model::FluidMode::ShapeDesign); }},
+        {"stylus radius", [](Panel& p) { typeAndCommit(child<QDoubleSpinBox>(p, "stylusRadius"), QStringLiteral("0.05")); },
+         [](EngineSettings& s) { s.flow.stylusRadius = 0.05; }},
+        {"stylus response", [](Panel& p) { typeAndCommit(child<QDoubleSpinBox>(p, "stylusResponse"), QStringLiteral("0.004")); },
+         [](EngineSettings& s) { s.flow.stylusResponse = 0.004; }},
         {"max spacing", [](Panel& p) { typeAndCommit(child<QDoubleSpinBox>(p, "maxSpacing"), QStringLiteral("0.002")); },
          [](EngineSettings& s) { s.tracking.maxSpacing = 0.002; }},
         {"adaptive", [](Panel& p) { clickBox(child<QCheckBox>(p, "adaptive")); },
@@ -134,7 +138,7 @@ private slots:
     void eachEditEmitsOnceWithThatFieldChanged();
     void typingCommitsOnEnterOnly();
     void unchangedValuesEmitNothing();
-    void modeSetsThePresetViscosity();
+    void modeSetsThePreset();
     void modeFollowsTheViscosity();
     void viscosityStepsByAFractionOfItself();
     void referenceBackendDisablesTheDevice();
@@ -169,7 +173,7 @@ void TestSimulationPanel::setSettingsShowsThemAndEmitsNothing()
 
     QCOMPARE(child<QSpinBox>(panel, "gridX")->value(), 96);
     QCOMPARE(child<QSpinBox>(panel, "gridY")->value(), 48);
-    QCOMPARE(child<QDoubleSpinBox>(panel, "viscosity")->value(), model::marblingViscosity);
+    QCOMPARE(child<QDoubleSpinBox>(panel, "viscosity")->value(), model::marblingPreset.viscosity);
     QVERIFY(child<QRadioButton>(panel, "marbling")->isChecked());
     QVERIFY(!child<QRadioButton>(panel, "shapeDesign")->isChecked());
     QCOMPARE(child<QDoubleSpinBox>(panel, "maxSpacing")->value(), 0.008);
@@ -226,7 +230,7 @@ void TestSimulationPanel::unchangedValuesEmitNothing()
     QVERIFY(panel->settings() == testSettings());
 }
 
-void TestSimulationPanel::modeSetsThePresetViscosity()
+void TestSimulationPanel::modeSetsThePreset()
 {
     const auto panel = openPanel();
     QSignalSpy spy(panel.get(), &app::SimulationPanel::settingsEdited);
@@ -234,29 +238,41 @@ void TestSimulationPanel::modeSetsThePresetViscosity()
     QRadioButton* shapeDesign = child<QRadioButton>(*panel, "shapeDesign");
     const QDoubleSpinBox* viscosity = child<QDoubleSpinBox>(*panel, "viscosity");
 
+    const QDoubleSpinBox* radius = child<QDoubleSpinBox>(*panel, "stylusRadius");
+    const QDoubleSpinBox* response = child<QDoubleSpinBox>(*panel, "stylusResponse");
+
     QTest::mouseClick(shapeDesign, Qt::LeftButton);
-    QCOMPARE(viscosity->value(), model::shapeDesignViscosity);
+    QCOMPARE(viscosity->value(), model::shapeDesignPreset.viscosity);
+    QCOMPARE(radius->value(), model::shapeDesignPreset.stylusRadius);
+    QCOMPARE(response->value(), model::shapeDesignPreset.stylusResponse);
     QVERIFY(shapeDesign->isChecked() && !marbling->isChecked());
     QTest::mouseClick(marbling, Qt::LeftButton);
-    QCOMPARE(viscosity->value(), model::marblingViscosity);
+    QCOMPARE(viscosity->value(), model::marblingPreset.viscosity);
+    QCOMPARE(radius->value(), model::marblingPreset.stylusRadius);
+    QCOMPARE(response->value(), model::marblingPreset.stylusResponse);
     QVERIFY(marbling->isChecked() && !shapeDesign->isChecked());
     QCOMPARE(spy.count(), 2);
-    QCOMPARE(edited(spy, 0).flow.viscosity, model::shapeDesignViscosity);
-    QCOMPARE(edited(spy, 1).flow.viscosity, model::marblingViscosity);
+    QVERIFY(model::isPreset(edited(spy, 0).flow, model::FluidMode::ShapeDesign));
+    QVERIFY(model::isPreset(edited(spy, 1).flow, model::FluidMode::Marbling));
 }
 
 void TestSimulationPanel::modeFollowsTheViscosity()
 {
     const auto panel = openPanel();
     QDoubleSpinBox* viscosity = child<QDoubleSpinBox>(*panel, "viscosity");
-    const QRadioButton* marbling = child<QRadioButton>(*panel, "marbling");
-    const QRadioButton* shapeDesign = child<QRadioButton>(*panel, "shapeDesign");
+    QRadioButton* marbling = child<QRadioButton>(*panel, "marbling");
+    QRadioButton* shapeDesign = child<QRadioButton>(*panel, "shapeDesign");
 
-    typeAndCommit(viscosity, QString::number(model::shapeDesignViscosity));
-    QVERIFY(shapeDesign->isChecked() && !marbling->isChecked());
-    typeAndCommit(viscosity, QStringLiteral("0.3"));  // a custom fluid: neither mode
+    QTest::mouseClick(shapeDesign, Qt::LeftButton);
+    typeAndCommit(viscosity, QStringLiteral("0.01"));  // between the presets: a custom fluid, neither mode
     QVERIFY(!shapeDesign->isChecked() && !marbling->isChecked());
-    typeAndCommit(viscosity, QStringLiteral("0.0005"));
+    // ...and both stay as legible as ever, to pick one again.
+    QVERIFY(shapeDesign->isEnabled() && marbling->isEnabled());
+    typeAndCommit(viscosity, QString::number(model::shapeDesignPreset.viscosity));
+    QVERIFY(shapeDesign->isChecked() && !marbling->isChecked());
+    typeAndCommit(child<QDoubleSpinBox>(*panel, "stylusRadius"), QStringLiteral("0.05"));  // a custom pen
+    QVERIFY(!shapeDesign->isChecked() && !marbling->isChecked());
+    QTest::mouseClick(marbling, Qt::LeftButton);
     QVERIFY(marbling->isChecked() && !shapeDesign->isChecked());
 }
 
@@ -266,7 +282,7 @@ void TestSimulationPanel::viscosityStepsByAFractionOfItself()
     const auto panel = openPanel();
     QSignalSpy spy(panel.get(), &app::SimulationPanel::settingsEdited);
     QDoubleSpinBox* viscosity = child<QDoubleSpinBox>(*panel, "viscosity");
-    for (const double start : {model::marblingViscosity, model::shapeDesignViscosity}) {
+    for (const double start : {model::marblingPreset.viscosity, model::shapeDesignPreset.viscosity}) {
         EngineSettings settings = testSettings();
         settings.flow.viscosity = start;
         panel->setSettings(settings);

@@ -179,17 +179,17 @@ private slots:
         doc.openScene(sceneWithRegions(1), QStringLiteral("reference"));
         QSignalSpy changed(&doc, &Document::settingsChanged);
         EngineSettings s = doc.settings();
-        s.flow.viscosity = shapeDesignViscosity;
+        s.flow.viscosity = shapeDesignPreset.viscosity;
         const sim::SimulationState start = port.state;
         doc.setSettings(s);
-        QCOMPARE(port.configured.flow.viscosity, shapeDesignViscosity);
+        QCOMPARE(port.configured.flow.viscosity, shapeDesignPreset.viscosity);
         QCOMPARE(changed.count(), 1);
         doc.setSettings(s);  // unchanged: no command
         QCOMPARE(doc.undoStack().count(), 1);
         port.flow(0.2);
         doc.undoStack().undo();
-        QCOMPARE(port.configured.flow.viscosity, marblingViscosity);
-        QCOMPARE(doc.settings().flow.viscosity, marblingViscosity);
+        QCOMPARE(port.configured.flow.viscosity, marblingPreset.viscosity);
+        QCOMPARE(doc.settings().flow.viscosity, marblingPreset.viscosity);
         QVERIFY(port.state == start);
     }
 
@@ -325,14 +325,14 @@ private slots:
         Document doc(port);
         doc.openScene(sceneWithRegions(1), QStringLiteral("reference"));
         EngineSettings s = doc.settings();
-        s.flow.viscosity = shapeDesignViscosity;
+        s.flow.viscosity = shapeDesignPreset.viscosity;
         doc.setSettings(s);
         doc.drop({0.5, 0.5}, 0.1, Qt::red);
         port.flow(0.5);
         const Project project = doc.draftProject().finish();  // the drop is still running
         QVERIFY(*project.history[1].after == project.state);
         QVERIFY(project.history[1].regionsAfter == doc.regions());
-        QCOMPARE(project.history[1].flowAfter.viscosity, shapeDesignViscosity);
+        QCOMPARE(project.history[1].flowAfter.viscosity, shapeDesignPreset.viscosity);
         QVERIFY(doc.undoStack().command(1) && doc.isModified());
 
         FakePort port2;
@@ -342,7 +342,7 @@ private slots:
         reopened.undoStack().redo();
         QVERIFY(port2.state == project.state);
         QVERIFY(reopened.regions() == doc.regions());
-        QCOMPARE(port2.configured.flow.viscosity, shapeDesignViscosity);
+        QCOMPARE(port2.configured.flow.viscosity, shapeDesignPreset.viscosity);
     }
 
     void projectReopensWithItsHistory()

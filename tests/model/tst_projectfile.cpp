@@ -134,7 +134,7 @@ Project fluidProject()
         {u"Stroke"_s, table({sun, ink}), table({sun, ink}), s2, s3, {}, {}, {}, {}},
     };
     // The last stroke came after a switch to shape design and a finer spacing.
-    p.history[3].flowBefore.viscosity = p.history[3].flowAfter.viscosity = shapeDesignViscosity;
+    p.history[3].flowBefore.viscosity = p.history[3].flowAfter.viscosity = shapeDesignPreset.viscosity;
     p.history[3].trackingBefore.maxSpacing = p.history[3].trackingAfter.maxSpacing = 0.002;
     p.history[2].flowAfter = p.history[3].flowBefore;
     p.historyIndex = 3;

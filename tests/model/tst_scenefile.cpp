@@ -64,6 +64,8 @@ Scene richScene()
     s.flow.gridY = 48;
     s.flow.viscosity = 1e-7 * std::numbers::sqrt2;
     s.flow.maccormack = false;
+    s.flow.stylusResponse = 0.0;  // the pen sets the velocity at once: allowed
+    s.flow.stylusRadius = 0.045;
     s.time = {1.0 / 700.0, 123'456};
     s.tracking = {std::numbers::pi / 1000.0, false, false, true, 123'457};
     s.regions.push_back({u"ink"_s, QColor(29, 53, 87), true, CircleShape{{0.1 + 0.2, 0.75}, 0.15}});
