@@ -304,12 +304,32 @@ void Canvas::paintOverlays(QPainter& painter, double dpr)
                 paintVertexDots(painter, *region, dpr);
     }
     paintSelection(painter, dpr);
+    paintTrail(painter);
     if (m_drag == Drag::Drop && m_dropPreview > 0.0) {
         painter.resetTransform();
         painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
         painter.setBrush(Qt::NoBrush);
         painter.drawEllipse(mapFromCanvas(m_dropCenter), m_dropPreview * m_scale, m_dropPreview * m_scale);
     }
+}
+
+// The stroke being drawn, as wide as the stylus reaches: a translucent band, so that the ink it
+// pushes shows through it, with the pen's own path along its middle.
+void Canvas::paintTrail(QPainter& painter)
+{
+    if (m_trail.size() < 2)
+        return;
+    painter.resetTransform();
+    QPolygonF path;
+    for (const QPointF& p : m_trail)
+        path << mapFromCanvas(p);
+    QColor band = palette().color(QPalette::Highlight);
+    band.setAlphaF(0.25);
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(band, 2.0 * m_stylusRadius * m_scale, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    painter.drawPolyline(path);
+    painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    painter.drawPolyline(path);
 }
 
 // The selected region's outline: a light line under a dark one, so that it shows on any ink and
@@ -399,6 +419,11 @@ void Canvas::publishFps()
 
 // ---- Tools --------------------------------------------------------------------------------------
 
+void Canvas::setStylusRadius(double radius)
+{
+    m_stylusRadius = radius;
+}
+
 void Canvas::setTool(Tool tool)
 {
     m_tool = tool;
@@ -449,6 +474,7 @@ void Canvas::mousePressEvent(QMouseEvent* event)
         break;
     case Tool::Stylus:
         m_drag = Drag::Stroke;
+        m_trail = {at};
         m_strokeLast = at;
         m_lastTime = qint64(event->timestamp());
         emit strokeStarted(at);
@@ -488,6 +514,8 @@ void Canvas::mouseMoveEvent(QMouseEvent* event)
         emit strokeMoved(m_strokeLast, at, double(time - m_lastTime) / 1000.0);
         m_strokeLast = at;
         m_lastTime = time;
+        m_trail << at;
+        update();
         return;
     }
     }
@@ -519,6 +547,8 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
             const qint64 elapsed = std::max<qint64>(1, qint64(event->timestamp()) - m_lastTime);
             emit strokeMoved(m_strokeLast, at, double(elapsed) / 1000.0);
         }
+        m_trail.clear();
+        update();
         emit strokeFinished();
         return;
     }

@@ -10,6 +10,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QPointF>
+#include <QPolygonF>
 #include <QTimer>
 #include <QWidget>
 
@@ -42,6 +43,9 @@ public:
     int selectedRegion() const { return m_selected; }
     // The topmost shown region whose ink covers `canvasPos`, by simulation index; -1: none.
     int regionAt(QPointF canvasPos) const;
+
+    // The stylus's radius in canvas units: the width of the trail a stroke leaves while drawn.
+    void setStylusRadius(double radius);
 
     double clickDropRadius() const { return m_clickDropRadius; }
     void setClickDropRadius(double fractionOfWidth) { m_clickDropRadius = fractionOfWidth; }
@@ -100,6 +104,7 @@ private:
     void paintInk(QSize deviceSize, double dpr);
     void paintOverlays(QPainter& painter, double dpr);
     void paintSelection(QPainter& painter, double dpr);
+    void paintTrail(QPainter& painter);
     void zoomAbout(QPointF widgetPos, double factor);
     void setView(double scale, QPointF offset);
     void updateCursor();
@@ -132,6 +137,8 @@ private:
     Drag m_drag = Drag::None;
     QPointF m_pressPos;      // widget pixels
     QPointF m_lastPos;       // widget pixels: the pan's last point
+    QPolygonF m_trail;       // canvas units: the stroke being drawn, from its start
+    double m_stylusRadius = 0.03;
     QPointF m_strokeLast;    // canvas units: where the stroke's last segment ended...
     qint64 m_lastTime = 0;   // ...and when (ms, the pointer event's timestamp)
     QPointF m_dropCenter;    // canvas units

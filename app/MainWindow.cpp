@@ -338,6 +338,7 @@ void MainWindow::connectDocument()
     connect(&m_document, &model::Document::regionChanged, this, [this] { m_canvas->setRegions(m_document.regions()); });
     connect(&m_document, &model::Document::settingsChanged, this, [this](const model::EngineSettings& s) {
         m_panel->setSettings(s);
+        m_canvas->setStylusRadius(s.flow.stylusRadius);
         QSettings().setValue(backendKey, s.backend);
         QSettings().setValue(deviceKey, s.device);
         m_marblingAction->setChecked(model::isPreset(s.flow, model::FluidMode::Marbling));
@@ -356,7 +357,11 @@ void MainWindow::connectDocument()
         }
         m_document.drop(toVec(center), radius, m_inkColor);
     });
-    connect(m_canvas, &Canvas::strokeStarted, this, [this] { m_document.beginStroke(); });
+    connect(m_canvas, &Canvas::strokeStarted, this, [this] {
+        m_document.beginStroke();
+        m_simulation.setStroking(true);
+    });
+    connect(m_canvas, &Canvas::strokeFinished, &m_simulation, [this] { m_simulation.setStroking(false); });
     connect(m_canvas, &Canvas::strokeMoved, this, [this](QPointF from, QPointF to, double seconds) {
         m_document.stroke(toVec(from), toVec(to), m_document.settings().flow.stylusRadius, seconds);
     });

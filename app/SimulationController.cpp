@@ -91,6 +91,11 @@ void SimulationController::setPlaying(bool playing)
     post([playing](SimulationWorker& w) { w.setPlaying(playing); });
 }
 
+void SimulationController::setStroking(bool stroking)
+{
+    post([stroking](SimulationWorker& w) { w.setStroking(stroking); });
+}
+
 void SimulationController::stepOnce()
 {
     post([](SimulationWorker& w) { w.stepOnce(); });

@@ -30,6 +30,7 @@ public:
 
     void setPlaying(bool playing);
     bool isPlaying() const { return m_playing; }
+    void setStroking(bool stroking);  // SimulationWorker::setStroking
     void stepOnce();
     void setVelocityWanted(bool wanted);
 

@@ -168,24 +168,45 @@ void SimulationWorker::setPlaying(bool playing)
 {
     if (playing == m_playing || (playing && !m_simulation))
         return;
+    const bool wasRunning = running();
     m_playing = playing;
-    m_nextStepAt = m_clock.elapsed();
-    m_stepsInWindow = 0;
-    m_windowStart = m_clock.elapsed();
-    m_stepsPerSecond = 0.0;
     emit playingChanged(m_playing);
+    onRunningChanged(wasRunning);
+}
+
+void SimulationWorker::setStroking(bool stroking)
+{
+    if (stroking == m_stroking || (stroking && !m_simulation))
+        return;
+    const bool wasRunning = running();
+    m_stroking = stroking;
+    onRunningChanged(wasRunning);
+}
+
+// After playing or stroking changed: a start counts real time and the steps per second from now;
+// a stop stops the step timer.
+void SimulationWorker::onRunningChanged(bool wasRunning)
+{
+    if (!wasRunning) {
+        m_nextStepAt = m_clock.elapsed();
+        m_stepsInWindow = 0;
+        m_windowStart = m_clock.elapsed();
+        m_stepsPerSecond = 0.0;
+    }
     scheduleStep();
 }
 
 void SimulationWorker::stepOnce()
 {
-    if (!m_playing)
+    if (!running())
         step();
 }
 
 void SimulationWorker::scheduleStep()
 {
-    if (m_playing && !m_stepTimer.isActive())
+    if (!running())
+        m_stepTimer.stop();
+    else if (!m_stepTimer.isActive())
         m_stepTimer.start(int(std::max<qint64>(0, m_nextStepAt - m_clock.elapsed())));
 }
 
@@ -229,11 +250,12 @@ void SimulationWorker::fail(const std::exception& error)
 
 void SimulationWorker::stopWith(const QString& message)
 {
+    m_stroking = false;
     if (m_playing) {
         m_playing = false;
-        m_stepTimer.stop();
         emit playingChanged(false);
     }
+    m_stepTimer.stop();
     emit failed(message);
 }
 
@@ -249,9 +271,10 @@ void SimulationWorker::requestDone()
 
 // A frame is made in two halves. The first takes everything but the geometry as it is now and
 // asks the simulation for a copy of the geometry (Simulation::requestRegions); the second, once
-// the copy is complete, adds it and hands the frame out. While playing, the next step is enqueued
-// in between, so this thread does not wait for the copy (on OpenCL the device makes it before the
-// step's kernels); paused, nothing would come in between, so the second half waits for it at once.
+// the copy is complete, adds it and hands the frame out. While running (playing, or during a
+// stroke), the next step is enqueued in between, so this thread does not wait for the copy (on
+// OpenCL the device makes it before the step's kernels); stopped, nothing would come in between,
+// so the second half waits for it at once.
 void SimulationWorker::offerFrame()
 {
     {
@@ -263,8 +286,8 @@ void SimulationWorker::offerFrame()
         if (!m_copying)
             startFrame();
         if (m_simulation) {
-            std::optional<sim::RegionsCopy> copy = m_simulation->takeRegions(!m_playing);
-            if (!copy && !m_playing) {  // the copy was dropped (a restore that failed): take the present
+            std::optional<sim::RegionsCopy> copy = m_simulation->takeRegions(!running());
+            if (!copy && !running()) {  // the copy was dropped (a restore that failed): take the present
                 startFrame();
                 copy = m_simulation->takeRegions(true);
             }

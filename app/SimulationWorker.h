@@ -36,6 +36,9 @@ public:
     void drop(sim::Vec2 center, double radius);
     void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
     void setPlaying(bool playing);
+    // While a stylus stroke is drawn the simulation runs even when paused, so that the water
+    // answers the pen; it stops again with the stroke unless playing.
+    void setStroking(bool stroking);
     void stepOnce();
     // Frames carry the velocity field only while the canvas shows it (a grid readback each).
     void setVelocityWanted(bool wanted) { m_velocityWanted = wanted; }
@@ -58,6 +61,8 @@ private:
     // A new simulation with these settings, carrying `state` when given (on the reference backend
     // if the chosen one cannot hold it); replaces the live one only on success. Throws otherwise.
     void build(const model::EngineSettings& settings, const sim::SimulationState* state);
+    bool running() const { return m_playing || m_stroking; }
+    void onRunningChanged(bool wasRunning);
     void step();
     void scheduleStep();
     void offerFrame();
@@ -73,6 +78,7 @@ private:
     QElapsedTimer m_clock;         // paces playing to real time: one dt of simulated time per dt
     qint64 m_nextStepAt = 0;       // ms on m_clock
     bool m_playing = false;
+    bool m_stroking = false;
     bool m_velocityWanted = false;
     std::uint64_t m_handled = 0;   // requests done
     std::int64_t m_steps = 0;

@@ -189,6 +189,40 @@ private slots:
         QVERIFY2(largestMove(before, after) > 0.005, "the stroke pushed the ink along");
     }
 
+    // Paused, a stroke still shows what it does: its trail while the pen is down, and the water
+    // running under it; the simulation pauses again when the pen lifts.
+    void strokeWhilePausedShowsItsTrailAndMovesTheWater()
+    {
+        MainWindow& w = *m_window;
+        Canvas& canvas = w.canvas();
+        const QAction* play = test::child<QAction>(w, "play");
+        QTest::keyClick(&w, Qt::Key_S);
+        QCOMPARE(canvas.tool(), Tool::Stylus);
+        const Geometry before = geometry(w);
+        const std::int64_t stepsBefore = w.simulation().frame()->steps;
+        const QPoint onTrail = canvas.mapFromCanvas({0.2, 0.5}).toPoint();  // bare water, behind the pen
+        const QColor water = canvas.grab().toImage().pixelColor(onTrail);
+
+        QTest::mousePress(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.15, 0.5}).toPoint());
+        for (int i = 1; i <= 10; ++i) {
+            QTest::qWait(20);  // time for the worker to step while the pen is down
+            QTest::mouseMove(&canvas, canvas.mapFromCanvas({0.15 + 0.05 * i, 0.5}).toPoint(), 20);
+        }
+        QVERIFY2(canvas.grab().toImage().pixelColor(onTrail) != water, "the trail shows behind the pen");
+        QTRY_VERIFY2(w.simulation().frame()->steps > stepsBefore, "the water runs while the pen is down");
+        QVERIFY(!play->isChecked());
+        QTest::mouseRelease(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.65, 0.5}).toPoint(), 20);
+
+        QCOMPARE(canvas.grab().toImage().pixelColor(onTrail), water);  // the trail goes with the pen
+        const Geometry atRelease = geometry(w);
+        QVERIFY2(largestMove(before, atRelease) > 0.001, "the ink moved without Play");
+        const std::int64_t stepsAtRelease = w.simulation().frame()->steps;
+        QTest::qWait(100);
+        QVERIFY(geometry(w) == atRelease);
+        QCOMPARE(w.simulation().frame()->steps, stepsAtRelease);  // paused again
+        QVERIFY(!play->isChecked());
+    }
+
     void velocityOverlayGetsTheField()
     {
         MainWindow& w = *m_window;
