@@ -113,7 +113,8 @@ void MainWindow::createActions()
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     updateRecentMenu();
     file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(SaveMode::Background); });
-    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, [this] { saveAs(SaveMode::Background); });
+    // Ctrl+Shift+S on every platform: some (the offscreen one, say) bind no key to SaveAs.
+    file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this, [this] { saveAs(SaveMode::Background); });
     file->addSeparator();
     file->addAction(tr("&Import SVG…"), QKeySequence(Qt::CTRL | Qt::Key_I), this, &MainWindow::chooseImport);
     file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportPicture);

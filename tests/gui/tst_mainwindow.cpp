@@ -1,6 +1,8 @@
 // The main window, driven as a user drives it: real widgets, QTest mouse and key events, the real
 // simulation worker (reference backend, paused, stepped explicitly so that every run is the
-// same). Each test checks the document, the undo stack and the geometry, not pixels.
+// same, but while a stroke is drawn). Each test checks the document, the undo stack and the
+// geometry; pixels only for what exists only as pixels (a stroke's trail). Shortcuts are pressed
+// on the window, never triggered, and a key Qt finds ambiguous fails any test.
 #include "FindChild.h"
 #include "app/ExportDialog.h"
 #include "app/Folders.h"
@@ -19,6 +21,8 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QRegularExpression>
+#include <QSet>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -26,6 +30,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolBar>
 #include <QXmlStreamReader>
 
 using namespace vf;
@@ -111,6 +116,8 @@ private slots:
 
     void init()
     {
+        // Qt says so, and runs neither action, when a key press matches two shortcuts.
+        QTest::failOnWarning(QRegularExpression(QStringLiteral("Ambiguous shortcut")));
         m_window = std::make_unique<MainWindow>();
         m_window->setAsk([this](const QString&, const QString& text, QMessageBox::StandardButtons) {
             m_questions << text;
@@ -290,11 +297,98 @@ private slots:
         }
     }
 
-    // A key given to two actions, or twice to one, is ambiguous: Qt then runs neither.
+    // Each tool's key, pressed on the window, picks the tool.
+    void toolsAnswerTheirKeys()
+    {
+        MainWindow& w = *m_window;
+        const struct {
+            Qt::Key key;
+            Tool tool;
+            const char* action;
+        } tools[] = {{Qt::Key_V, Tool::Select, "toolSelect"}, {Qt::Key_S, Tool::Stylus, "toolStylus"},
+                     {Qt::Key_T, Tool::Text, "toolText"},     {Qt::Key_H, Tool::Pan, "toolPan"},
+                     {Qt::Key_D, Tool::Drop, "toolDrop"}};
+        for (const auto& t : tools) {
+            QTest::keyClick(&w, t.key);
+            QVERIFY2(w.canvas().tool() == t.tool, qPrintable(QKeySequence(t.key).toString() + " picked no tool"));
+            QVERIFY(test::child<QAction>(w, t.action)->isChecked());
+        }
+    }
+
+    // Space plays and pauses, the full stop steps once while paused, Ctrl+R resets.
+    void playStepAndResetAnswerTheirKeys()
+    {
+        MainWindow& w = *m_window;
+        const QAction* play = test::child<QAction>(w, "play");
+        w.simulation().sync();
+        const std::int64_t steps = w.simulation().frame()->steps;
+        QTest::keyClick(&w, Qt::Key_Period);
+        w.simulation().sync();
+        QCOMPARE(w.simulation().frame()->steps, steps + 1);
+
+        QTest::keyClick(&w, Qt::Key_Space);
+        QVERIFY(play->isChecked() && w.simulation().isPlaying());
+        QTRY_VERIFY(w.simulation().frame()->steps > steps + 2);
+        QTest::keyClick(&w, Qt::Key_Space);
+        QVERIFY(!play->isChecked() && !w.simulation().isPlaying());
+
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_R));
+        QCOMPARE(w.document().undoStack().text(w.document().undoStack().index() - 1), QStringLiteral("Reset"));
+        w.simulation().sync();
+        QCOMPARE(w.simulation().frame()->steps, std::int64_t(0));
+    }
+
+    // Zoom in and out by the platform's keys, Ctrl+1 for the export size, Ctrl+0 to fit again.
+    void zoomAnswersItsKeys()
+    {
+        MainWindow& w = *m_window;
+        const Canvas& canvas = w.canvas();
+        const double fitted = canvas.zoom();
+        QTest::keySequence(&w, QKeySequence(QKeySequence::ZoomIn));
+        QVERIFY(canvas.zoom() > fitted * 1.1);
+        QTest::keySequence(&w, QKeySequence(QKeySequence::ZoomOut));
+        QTest::keySequence(&w, QKeySequence(QKeySequence::ZoomOut));
+        QVERIFY(canvas.zoom() < fitted / 1.1);
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_1));
+        QVERIFY(std::abs(canvas.zoom() - fitted) > 1e-6 * fitted);
+        const double actual = canvas.zoom();
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_0));
+        QCOMPARE(canvas.zoom(), fitted);
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_1));
+        QCOMPARE(canvas.zoom(), actual);
+    }
+
+    // Save As by its key opens the dialog (answered with Cancel here: nothing is written).
+    void saveAsAnswersItsKey()
+    {
+        MainWindow& w = *m_window;
+        bool asked = false;
+        whenModal<QFileDialog>([&asked](QFileDialog* dialog) {
+            asked = true;
+            dialog->reject();
+        });
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+        QVERIFY(asked);
+    }
+
+    // A key given to two actions, or twice to one, is ambiguous: Qt then runs neither. Every
+    // action the window holds and every one its menus and tool bars show, whoever owns it.
     void noShortcutIsAmbiguous()
     {
+        const QList<QAction*> children = m_window->findChildren<QAction*>();
+        QSet<QAction*> actions(children.begin(), children.end());
+        QList<QWidget*> holders{m_window->menuBar()};
+        for (QToolBar* bar : m_window->findChildren<QToolBar*>())
+            holders << bar;
+        while (!holders.isEmpty()) {
+            for (QAction* action : holders.takeLast()->actions()) {
+                actions.insert(action);
+                if (action->menu())
+                    holders << action->menu();
+            }
+        }
         QHash<QKeySequence, QString> owner;
-        for (const QAction* action : m_window->findChildren<QAction*>()) {
+        for (const QAction* action : actions) {
             if (action->shortcutContext() == Qt::WidgetShortcut)
                 continue;
             for (const QKeySequence& key : action->shortcuts()) {
