@@ -187,6 +187,11 @@ void Canvas::wheelEvent(QWheelEvent* event)
 
 bool Canvas::event(QEvent* event)
 {
+    // Typed text takes its keys before the window's shortcuts (T, S, Space...) would.
+    if (event->type() == QEvent::ShortcutOverride && m_textEntry.takes(*static_cast<QKeyEvent*>(event))) {
+        event->accept();
+        return true;
+    }
     if (event->type() == QEvent::NativeGesture) {
         const auto* gesture = static_cast<QNativeGestureEvent*>(event);
         if (gesture->gestureType() == Qt::ZoomNativeGesture) {
@@ -305,6 +310,7 @@ void Canvas::paintOverlays(QPainter& painter, double dpr)
     }
     paintSelection(painter, dpr);
     paintTrail(painter);
+    paintTextEntry(painter);
     if (m_drag == Drag::Drop && m_dropPreview > 0.0) {
         painter.resetTransform();
         painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
@@ -330,6 +336,46 @@ void Canvas::paintTrail(QPainter& painter)
     painter.drawPolyline(path);
     painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
     painter.drawPolyline(path);
+}
+
+// The text being typed: its ink to come, translucent, with a caret after it as tall as its letters.
+void Canvas::paintTextEntry(QPainter& painter)
+{
+    if (!m_textEntry.isActive())
+        return;
+    painter.resetTransform();
+    const QTransform toWidget(m_scale, 0.0, 0.0, m_scale, m_offset.x(), m_offset.y());
+    QColor fill = m_textColor;
+    fill.setAlphaF(0.6 * fill.alphaF());
+    const QColor highlight = palette().color(QPalette::Highlight);
+    painter.setPen(QPen(highlight, 1.0));
+    painter.setBrush(fill);
+    painter.drawPath(toWidget.map(m_textPreview));
+    const QPointF start = m_textEntry.baselineStart();
+    const double caretX = m_textPreview.isEmpty() ? start.x() : std::max(start.x(), m_textPreview.boundingRect().right());
+    painter.setPen(QPen(highlight, 2.0));
+    painter.drawLine(mapFromCanvas({caretX, start.y()}), mapFromCanvas({caretX, start.y() - m_textHeight}));
+}
+
+void Canvas::setTextPreview(const QPainterPath& outlines, double letterHeight, const QColor& color)
+{
+    m_textPreview = outlines;
+    m_textHeight = letterHeight;
+    m_textColor = color;
+    update();
+}
+
+void Canvas::finishText(bool commit)
+{
+    if (!m_textEntry.isActive())
+        return;
+    const QPointF at = m_textEntry.baselineStart();
+    const QString text = m_textEntry.text();
+    m_textEntry.end();
+    m_textPreview.clear();
+    update();
+    if (commit)
+        emit textCommitted(at, text);
 }
 
 // The selected region's outline: a light line under a dark one, so that it shows on any ink and
@@ -426,6 +472,8 @@ void Canvas::setStylusRadius(double radius)
 
 void Canvas::setTool(Tool tool)
 {
+    if (tool != m_tool)
+        finishText(true);
     m_tool = tool;
     updateCursor();
 }
@@ -480,7 +528,10 @@ void Canvas::mousePressEvent(QMouseEvent* event)
         emit strokeStarted(at);
         break;
     case Tool::Text:
-        emit textRequested(at);
+        finishText(true);  // a click elsewhere sets what was typed, and starts anew there
+        m_textEntry.begin(at);
+        update();
+        emit textEdited();
         break;
     case Tool::Pan:
         break;  // handled above
@@ -557,6 +608,20 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
 
 void Canvas::keyPressEvent(QKeyEvent* event)
 {
+    switch (m_textEntry.press(*event)) {
+    case TextEntry::Outcome::Edited:
+        update();
+        emit textEdited();
+        return;
+    case TextEntry::Outcome::Committed:
+        finishText(true);
+        return;
+    case TextEntry::Outcome::Cancelled:
+        finishText(false);
+        return;
+    case TextEntry::Outcome::Ignored:
+        break;
+    }
     if (event->key() == Qt::Key_Space) {
         if (!event->isAutoRepeat()) {
             m_spaceHeld = true;

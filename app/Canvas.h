@@ -3,12 +3,14 @@
 // lets the user zoom and pan, and turns pointer input into tool requests in canvas units (origin
 // top-left, y down). It never touches the simulation: the main window connects its signals.
 #include "app/RegionPaths.h"
+#include "app/TextEntry.h"
 #include "model/Frame.h"
 #include "model/Regions.h"
 
 #include <QColor>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QPainterPath>
 #include <QPointF>
 #include <QPolygonF>
 #include <QTimer>
@@ -46,6 +48,10 @@ public:
 
     // The stylus's radius in canvas units: the width of the trail a stroke leaves while drawn.
     void setStylusRadius(double radius);
+    // The text being typed (the Text tool), and what its ink will be, in canvas units: the glyph
+    // outlines (filled even-odd) and the letters' height, shown until Enter or Esc.
+    const TextEntry& textEntry() const { return m_textEntry; }
+    void setTextPreview(const QPainterPath& outlines, double letterHeight, const QColor& color);
 
     double clickDropRadius() const { return m_clickDropRadius; }
     void setClickDropRadius(double fractionOfWidth) { m_clickDropRadius = fractionOfWidth; }
@@ -75,7 +81,9 @@ signals:
     // `seconds`: between the two pointer events, so distance / seconds is the pen's speed.
     void strokeMoved(QPointF from, QPointF to, double seconds);
     void strokeFinished();
-    void textRequested(QPointF baselineStart);
+    // The text being typed began or changed: textEntry() has it.
+    void textEdited();
+    void textCommitted(QPointF baselineStart, const QString& text);  // Enter (or a click elsewhere)
     // The Select tool clicked: the region there (regionAt), or -1 for bare water.
     void regionClicked(int simIndex);
     void displayFpsChanged(int fps);
@@ -105,6 +113,8 @@ private:
     void paintOverlays(QPainter& painter, double dpr);
     void paintSelection(QPainter& painter, double dpr);
     void paintTrail(QPainter& painter);
+    void paintTextEntry(QPainter& painter);
+    void finishText(bool commit);
     void zoomAbout(QPointF widgetPos, double factor);
     void setView(double scale, QPointF offset);
     void updateCursor();
@@ -139,6 +149,10 @@ private:
     QPointF m_lastPos;       // widget pixels: the pan's last point
     QPolygonF m_trail;       // canvas units: the stroke being drawn, from its start
     double m_stylusRadius = 0.03;
+    TextEntry m_textEntry;
+    QPainterPath m_textPreview;  // canvas units
+    double m_textHeight = 0.1;
+    QColor m_textColor;
     QPointF m_strokeLast;    // canvas units: where the stroke's last segment ended...
     qint64 m_lastTime = 0;   // ...and when (ms, the pointer event's timestamp)
     QPointF m_dropCenter;    // canvas units

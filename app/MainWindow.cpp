@@ -10,6 +10,7 @@
 #include "app/Folders.h"
 #include "app/Recovery.h"
 #include "app/SimulationPanel.h"
+#include "app/TextToolBar.h"
 #include "model/ProjectFile.h"
 #include "model/SceneFile.h"
 #include "model/SvgImport.h"
@@ -24,7 +25,6 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFontDialog>
 #include <QInputDialog>
 #include <QMenuBar>
 #include <QPushButton>
@@ -46,7 +46,6 @@ const QString saveFolderKey = QStringLiteral("files/saveFolder");  // where Save
 const QString backendKey = QStringLiteral("simulation/backend");
 const QString deviceKey = QStringLiteral("simulation/device");
 const QString historyBudgetKey = QStringLiteral("history/budgetMB");
-const QString textFontKey = QStringLiteral("text/font");
 
 sim::Vec2 toVec(QPointF p)
 {
@@ -192,24 +191,16 @@ void MainWindow::createActions()
         if (c.isValid())
             setInkColor(c);
     });
-    auto* fontButton = new QPushButton(tr("Font…"), this);
-    fontButton->setObjectName(QStringLiteral("textFont"));
-    fontButton->setToolTip(tr("Typeface of the Text tool"));
-    connect(fontButton, &QPushButton::clicked, this, [this, fontButton] {
-        bool ok = false;
-        const QFont font = QFontDialog::getFont(&ok, m_textFont, this, tr("Text font"));
-        if (!ok)
-            return;
-        m_textFont = font;
-        fontButton->setText(font.family());
-        QSettings().setValue(textFontKey, font.toString());
-    });
-    if (const QString saved = QSettings().value(textFontKey).toString(); !saved.isEmpty() && m_textFont.fromString(saved))
-        fontButton->setText(m_textFont.family());
     tools->addSeparator();
     tools->addWidget(colorButton);
-    tools->addWidget(fontButton);
     setInkColor(m_inkColor);
+
+    // The Text tool's options, on a bar of their own that shows while the tool is picked.
+    m_textOptions = new TextToolBar(this);
+    addToolBar(m_textOptions);
+    m_textOptions->setVisible(false);
+    connect(m_textOptions, &TextToolBar::changed, this, &MainWindow::previewText);
+    connect(findChild<QAction*>(QStringLiteral("toolText")), &QAction::toggled, m_textOptions, &QWidget::setVisible);
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     QToolBar* playback = addToolBar(tr("Playback"));
@@ -366,7 +357,8 @@ void MainWindow::connectDocument()
     connect(m_canvas, &Canvas::strokeMoved, this, [this](QPointF from, QPointF to, double seconds) {
         m_document.stroke(toVec(from), toVec(to), m_document.settings().flow.stylusRadius, seconds);
     });
-    connect(m_canvas, &Canvas::textRequested, this, &MainWindow::askText);
+    connect(m_canvas, &Canvas::textEdited, this, &MainWindow::previewText);
+    connect(m_canvas, &Canvas::textCommitted, this, [this](QPointF at, const QString& text) { insertText(text, at); });
     connect(m_canvas, &Canvas::regionClicked, m_regionsDock, &RegionsDock::selectRegion);
     connect(m_regionsDock, &RegionsDock::selectedRegionChanged, m_canvas, &Canvas::setSelectedRegion);
     connect(m_regionsDock, &RegionsDock::refused, this, [this](const QString& reason) { statusBar()->showMessage(reason, 5000); });
@@ -631,12 +623,28 @@ bool MainWindow::importSvg(const QString& path)
     return true;
 }
 
-void MainWindow::askText(QPointF at)
+std::vector<sim::Polygon> MainWindow::textOutlines(const QString& text, QPointF baselineStart) const
 {
-    bool ok = false;
-    const QString text = QInputDialog::getText(this, tr("Text"), tr("Text to set in ink:"), QLineEdit::Normal, {}, &ok);
-    if (ok)
-        insertText(text, at);
+    return model::textContours(text, m_textOptions->font(), toVec(baselineStart), m_textOptions->size(),
+                               m_document.settings().tracking.maxSpacing);
+}
+
+// What the text being typed will become, shown on the canvas as it is typed.
+void MainWindow::previewText()
+{
+    const TextEntry& entry = m_canvas->textEntry();
+    if (!entry.isActive())
+        return;
+    QPainterPath outlines;
+    outlines.setFillRule(Qt::OddEvenFill);
+    for (const sim::Polygon& contour : textOutlines(entry.text(), entry.baselineStart())) {
+        QPolygonF polygon;
+        for (const sim::Vec2& p : contour)
+            polygon << QPointF(p.x, p.y);
+        outlines.addPolygon(polygon);
+        outlines.closeSubpath();
+    }
+    m_canvas->setTextPreview(outlines, m_textOptions->size(), m_inkColor);
 }
 
 void MainWindow::insertText(const QString& text, QPointF baselineStart)
@@ -647,9 +655,7 @@ void MainWindow::insertText(const QString& text, QPointF baselineStart)
         statusBar()->showMessage(tr("The scene's own drops are still landing; play on and try again"), 5000);
         return;
     }
-    // A tenth of the canvas height per em: big enough to read, small enough to leave room to flow.
-    const double em = 0.1 * m_document.scene().canvas.height;
-    auto contours = model::textContours(text, m_textFont, toVec(baselineStart), em, m_document.settings().tracking.maxSpacing);
+    auto contours = textOutlines(text, baselineStart);
     if (contours.empty())
         return;
     m_document.addRegions(tr("Text “%1”").arg(text), {{text, m_inkColor, std::move(contours)}});
@@ -687,6 +693,7 @@ void MainWindow::setInkColor(const QColor& color)
         swatch.fill(color);
         button->setIcon(QIcon(swatch));
     }
+    previewText();
 }
 
 } // namespace vf::app

@@ -21,6 +21,7 @@ namespace vf::app {
 
 class Recovery;
 class SimulationPanel;
+class TextToolBar;
 
 class MainWindow final : public QMainWindow {
     Q_OBJECT
@@ -81,7 +82,8 @@ private:
     void exportPicture();
     void copySvg();
     void chooseImport();
-    void askText(QPointF at);
+    std::vector<sim::Polygon> textOutlines(const QString& text, QPointF baselineStart) const;
+    void previewText();
     void addRecent(const QString& path);
     void updateRecentMenu();
     void updateTitle();
@@ -96,6 +98,7 @@ private:
     RegionsDock* m_regionsDock = nullptr;
     QUndoView* m_historyView = nullptr;
     SimulationPanel* m_panel = nullptr;
+    TextToolBar* m_textOptions = nullptr;
     Recovery* m_recovery = nullptr;
     QMenu* m_recentMenu = nullptr;
     QAction* m_playAction = nullptr;
@@ -109,7 +112,6 @@ private:
     int m_opened = 0;  // counts documents opened, so a late save result finds its own
     QString m_sceneName;  // of the scene file the document was opened from; the title shows it
     QColor m_inkColor = QColor(0x1d, 0x35, 0x57);
-    QFont m_textFont = QFont(QStringLiteral("DejaVu Sans"));
     Ask m_ask;
     Report m_report;
 };

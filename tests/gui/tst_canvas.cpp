@@ -204,14 +204,31 @@ private slots:
         QCOMPARE(finished.count(), 1);
     }
 
-    void textClickGivesTheBaselineStart()
+    // A click starts the text at its baseline; typing edits it, Enter sets it, Esc drops it.
+    void textIsTypedWhereClicked()
     {
-        QSignalSpy texts(m_canvas.get(), &Canvas::textRequested);
+        QSignalSpy edits(m_canvas.get(), &Canvas::textEdited);
+        QSignalSpy commits(m_canvas.get(), &Canvas::textCommitted);
         QSignalSpy drops(m_canvas.get(), &Canvas::dropRequested);
         m_canvas->setTool(Tool::Text);
         QTest::mouseClick(m_canvas.get(), Qt::LeftButton, {}, QPoint(210, 90));
-        QCOMPARE(texts.count(), 1);
-        QVERIFY(near(texts[0][0].toPointF(), m_canvas->mapToCanvas(QPointF(210, 90))));
+        QVERIFY(m_canvas->textEntry().isActive());
+        QVERIFY(near(m_canvas->textEntry().baselineStart(), m_canvas->mapToCanvas(QPointF(210, 90))));
+        QTest::keyClicks(m_canvas.get(), QStringLiteral("Sun x"));
+        QTest::keyClick(m_canvas.get(), Qt::Key_Backspace);
+        QCOMPARE(m_canvas->textEntry().text(), QStringLiteral("Sun "));
+        QCOMPARE(edits.count(), 1 + 5 + 1);
+        QTest::keyClick(m_canvas.get(), Qt::Key_Return);
+        QCOMPARE(commits.count(), 1);
+        QCOMPARE(commits[0][1].toString(), QStringLiteral("Sun "));
+        QVERIFY(near(commits[0][0].toPointF(), m_canvas->mapToCanvas(QPointF(210, 90))));
+        QVERIFY(!m_canvas->textEntry().isActive());
+
+        QTest::mouseClick(m_canvas.get(), Qt::LeftButton, {}, QPoint(100, 100));
+        QTest::keyClicks(m_canvas.get(), QStringLiteral("gone"));
+        QTest::keyClick(m_canvas.get(), Qt::Key_Escape);
+        QVERIFY(!m_canvas->textEntry().isActive());
+        QCOMPARE(commits.count(), 1);
         QCOMPARE(drops.count(), 0);
     }
 

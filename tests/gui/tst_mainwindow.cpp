@@ -15,7 +15,9 @@
 #include <glm/geometric.hpp>
 
 #include <QAction>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
+#include <QFontDialog>
 #include <QHash>
 #include <QLineEdit>
 #include <QMenu>
@@ -684,17 +686,73 @@ private slots:
         QCOMPARE(w.document().undoStack().count(), 1);
     }
 
-    void textBecomesInkRegions()
+    // T, a click, typing (letters that are shortcuts too) with the outlines shown as they are
+    // typed, at the size set in the text options in canvas units; Enter sets it as one undo step,
+    // Esc drops it.
+    void textIsTypedOnTheCanvas()
     {
         MainWindow& w = *m_window;
-        w.insertText(QStringLiteral("VF"), {0.3, 0.9});
+        Canvas& canvas = w.canvas();
+        QTest::keyClick(&w, Qt::Key_T);
+        auto* options = test::child<QToolBar>(w, "textOptions");
+        QVERIFY(options->isVisible());
+        auto* size = test::child<QDoubleSpinBox>(w, "textSize");
+        size->selectAll();
+        QTest::keyClicks(size, QStringLiteral("0.2"));
+        QTest::keyClick(size, Qt::Key_Return);
+        QCOMPARE(size->value(), 0.2);
+
+        QTest::mouseClick(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.1, 0.9}).toPoint());
+        const QImage before = canvas.grab().toImage();
+        QTest::keyClicks(&canvas, QStringLiteral("STVD"));
+        QCOMPARE(canvas.tool(), Tool::Text);  // the letters were typed, not taken as tool keys
+        QCOMPARE(canvas.textEntry().text(), QStringLiteral("STVD"));
+        const QImage typed = canvas.grab().toImage();
+        int changed = 0;
+        for (int y = 0; y < typed.height(); ++y)
+            for (int x = 0; x < typed.width(); ++x)
+                changed += typed.pixel(x, y) != before.pixel(x, y);
+        QVERIFY2(changed > 500, "the letters' outlines show while typed");
+        QCOMPARE(w.document().undoStack().count(), 0);
+
+        QTest::keyClick(&canvas, Qt::Key_Return);
+        QCOMPARE(w.document().undoStack().count(), 1);
+        QCOMPARE(w.document().regions().back().name, QStringLiteral("STVD"));
         const Geometry g = geometry(w);
         QCOMPARE(g.size(), std::size_t(3));
-        QCOMPARE(w.document().regions().back().name, QStringLiteral("VF"));
-        QVERIFY(g[2].size() >= 2);  // one outline per letter
+        double top = 1.0, bottom = 0.0;
+        for (const sim::Polygon& contour : g[2])
+            for (const sim::Vec2& p : contour) {
+                top = std::min(top, p.y);
+                bottom = std::max(bottom, p.y);
+            }
+        QVERIFY2(bottom - top > 0.1 && bottom - top < 0.2, "capitals about 0.7 of a 0.2 em tall");
+        QVERIFY(std::abs(bottom - 0.9) < 0.01);  // standing on the baseline clicked
+
+        QTest::mouseClick(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.5, 0.3}).toPoint());
+        QTest::keyClicks(&canvas, QStringLiteral("gone"));
+        QTest::keyClick(&canvas, Qt::Key_Escape);
         QCOMPARE(w.document().undoStack().count(), 1);
-        w.document().undoStack().undo();
+        QTest::keySequence(&w, QKeySequence::Undo);
         QCOMPARE(geometry(w).size(), std::size_t(2));
+    }
+
+    // The typeface starts upright, and the font dialog opens on it so.
+    void textFontStartsUpright()
+    {
+        MainWindow& w = *m_window;
+        QTest::keyClick(&w, Qt::Key_T);
+        auto* font = test::child<QPushButton>(w, "textFont");
+        QVERIFY2(!font->text().contains(QStringLiteral("Oblique")) && !font->text().contains(QStringLiteral("Italic")),
+                 qPrintable(font->text()));
+        QFont offered;
+        whenModal<QFontDialog>([&offered](QFontDialog* dialog) {
+            offered = dialog->currentFont();
+            dialog->reject();
+        });
+        QTest::mouseClick(font, Qt::LeftButton);
+        QVERIFY(!offered.family().isEmpty());
+        QVERIFY2(offered.style() == QFont::StyleNormal, qPrintable(offered.toString()));
     }
 
     // Select the top region by clicking its row, press Delete: its ink goes, the other region's
