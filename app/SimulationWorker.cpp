@@ -66,6 +66,7 @@ void SimulationWorker::load(const model::Scene& scene, const model::EngineSettin
     m_scene = scene;
     m_script.emplace(scene);
     m_steps = 0;
+    m_pen.clear();
     try {
         if (start) {
             build(settings, start->wait().get());
@@ -124,6 +125,7 @@ void SimulationWorker::snapshot(const model::StateSlotPtr& into)
 void SimulationWorker::restore(const model::StateSlotPtr& from)
 {
     const model::StatePtr state = from->wait();
+    m_pen.clear();  // the pen acted on the state being replaced
     if (!m_simulation) {  // its load failed: the state brings the work back
         build(m_settings, state.get());
         return;
@@ -160,8 +162,22 @@ void SimulationWorker::drop(sim::Vec2 center, double radius)
 
 void SimulationWorker::stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
 {
-    if (m_simulation)
-        m_simulation->stylus(from, to, radius, seconds);
+    if (!m_simulation)
+        return;
+    const sim::StylusSegment segment{from, to, radius, seconds};
+    const int parts = std::max(1, int(std::lround(seconds / m_scene.time.dt)));
+    for (int k = 0; k < parts; ++k)
+        m_pen.push_back(segment.part(k, parts));
+}
+
+// One part a step: each covers about one step's time.
+void SimulationWorker::feedPen()
+{
+    if (m_pen.empty())
+        return;
+    const sim::StylusSegment& part = m_pen.front();
+    m_simulation->stylus(part.from, part.to, part.radius, part.duration);
+    m_pen.pop_front();
 }
 
 void SimulationWorker::setPlaying(bool playing)
@@ -219,6 +235,7 @@ void SimulationWorker::step()
     try {
         bool limit = m_script->applyDrops(*m_simulation, t, t + dt);
         m_script->applyStylus(*m_simulation, t, t + dt);
+        feedPen();
         limit = m_simulation->step(dt).vertexLimitReached || limit;
         ++m_steps;
         if (limit)
@@ -251,6 +268,7 @@ void SimulationWorker::fail(const std::exception& error)
 void SimulationWorker::stopWith(const QString& message)
 {
     m_stroking = false;
+    m_pen.clear();
     if (m_playing) {
         m_playing = false;
         emit playingChanged(false);

@@ -8,11 +8,13 @@
 #include "model/SceneScript.h"
 #include "model/StateSlot.h"
 #include "sim/Simulation.h"
+#include "sim/Stylus.h"
 
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -34,6 +36,9 @@ public:
     void addRegion(const std::vector<sim::Polygon>& contours);
     void removeRegion(int region);
     void drop(sim::Vec2 center, double radius);
+    // The pen's motion is fed to the simulation over the steps its duration covers, one step's
+    // worth a step: handed over whole, a pointer event's 20 ms would push during one step of 5 ms
+    // and leave the water idle for three, and a viscous fluid would barely follow the pen.
     void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
     void setPlaying(bool playing);
     // While a stylus stroke is drawn the simulation runs even when paused, so that the water
@@ -62,6 +67,7 @@ private:
     // if the chosen one cannot hold it); replaces the live one only on success. Throws otherwise.
     void build(const model::EngineSettings& settings, const sim::SimulationState* state);
     bool running() const { return m_playing || m_stroking; }
+    void feedPen();
     void onRunningChanged(bool wasRunning);
     void step();
     void scheduleStep();
@@ -79,6 +85,7 @@ private:
     qint64 m_nextStepAt = 0;       // ms on m_clock
     bool m_playing = false;
     bool m_stroking = false;
+    std::deque<sim::StylusSegment> m_pen;  // pen input not yet fed, in parts of about one step each
     bool m_velocityWanted = false;
     std::uint64_t m_handled = 0;   // requests done
     std::int64_t m_steps = 0;

@@ -615,6 +615,37 @@ private slots:
         QVERIFY(test::child<QAction>(w, "modeMarbling")->isChecked());
     }
 
+    // The mode's promise through the window: a stroke by mouse at half a canvas width per second
+    // carries the ink under the pen at least half the stroke's length (the pointer's events, 40 ms
+    // apart, reach the water over the steps they span, not all in one).
+    void shapeDesignStrokeByMouseCarriesTheInk()
+    {
+        MainWindow& w = *m_window;
+        model::Scene scene;
+        model::applyPreset(scene.flow, model::FluidMode::ShapeDesign);
+        scene.time.dt = 0.005;
+        scene.regions.push_back({QStringLiteral("ink"), Qt::black, true, model::CircleShape{{0.35, 0.5}, 0.035}});
+        const QString path = m_dir.filePath(QStringLiteral("shape.vfscene"));
+        QCOMPARE(model::writeSceneFile(scene, path), QString());
+        QVERIFY(w.openFile(path));
+        w.simulation().setPlaying(false);
+        const Geometry before = geometry(w);
+
+        Canvas& canvas = w.canvas();
+        QTest::keyClick(&w, Qt::Key_S);
+        QTest::mousePress(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.35, 0.5}).toPoint());
+        for (int i = 1; i <= 15; ++i) {
+            QTest::qWait(40);  // the events' time stamps step by 40 ms; the worker runs meanwhile
+            QTest::mouseMove(&canvas, canvas.mapFromCanvas({0.35 + 0.02 * i, 0.5}).toPoint(), 40);
+        }
+        QTest::qWait(40);
+        QTest::mouseRelease(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.65, 0.5}).toPoint(), 40);
+        for (int i = 0; i < 20; ++i)  // what the pen did last, and the water coming to rest
+            QTest::keyClick(&w, Qt::Key_Period);
+        const double carried = largestMove(before, geometry(w)) / 0.3;
+        QVERIFY2(carried >= 0.5, qPrintable(QStringLiteral("the ink went %1 of the stroke").arg(carried)));
+    }
+
     void autosaveRecoversAfterACrash()
     {
         MainWindow& w = *m_window;
