@@ -1,7 +1,7 @@
 #include "app/TextToolBar.h"
 
 #include <QDoubleSpinBox>
-#include <QFontDatabase>
+#include <QFontInfo>
 #include <QFontDialog>
 #include <QLabel>
 #include <QPushButton>
@@ -13,17 +13,14 @@ namespace {
 const QString fontKey = QStringLiteral("text/font");
 constexpr double kDefaultSize = 0.1;  // a tenth of a unit canvas: big enough to read, room to flow
 
-// The family's upright style of normal weight. A font named by its family alone leaves the style
-// to the font dialog, which may open on another one (DejaVu Sans opened as Oblique, which
-// QFontDatabase::italic() does not count as italic).
-QFont uprightFont(const QString& family)
+// The family's regular face, named: the style its name alone is drawn in. A font named by its
+// family alone leaves the style to the font dialog, which asks for a style called "Normal", and
+// where the family has none (DejaVu Sans: Book) opens on the first it lists (Oblique).
+QFont regularFont(const QString& family)
 {
-    for (const QString& style : QFontDatabase::styles(family)) {
-        const QFont font = QFontDatabase::font(family, style, QFont().pointSize());
-        if (font.style() == QFont::StyleNormal && font.weight() == QFont::Normal)
-            return font;
-    }
-    return QFont(family);
+    QFont font(family);
+    font.setStyleName(QFontInfo(font).styleName());
+    return font;
 }
 
 } // namespace
@@ -50,7 +47,7 @@ TextToolBar::TextToolBar(QWidget* parent)
 
     QFont saved;
     const QString savedText = QSettings().value(fontKey).toString();
-    setTextFont(!savedText.isEmpty() && saved.fromString(savedText) ? saved : uprightFont(QStringLiteral("DejaVu Sans")));
+    setTextFont(!savedText.isEmpty() && saved.fromString(savedText) ? saved : regularFont(QStringLiteral("DejaVu Sans")));
 }
 
 double TextToolBar::size() const
