@@ -179,33 +179,36 @@ QWidget* SimulationPanel::createBackendGroup()
 void SimulationPanel::connectEdits()
 {
     connect(m_mode, &QButtonGroup::idClicked, this, [this](int mode) {
-        edit([&](model::EngineSettings& s) { model::applyPreset(s.flow, model::FluidMode(mode)); });
+        edit(nullptr, [&](model::EngineSettings& s) { model::applyPreset(s.flow, model::FluidMode(mode)); });
     });
-    connect(m_viscosity, &QDoubleSpinBox::valueChanged, this,
-            [this](double value) { edit([&](model::EngineSettings& s) { s.flow.viscosity = value; }); });
-    connect(m_stylusRadius, &QDoubleSpinBox::valueChanged, this,
-            [this](double value) { edit([&](model::EngineSettings& s) { s.flow.stylusRadius = value; }); });
-    connect(m_stylusResponse, &QDoubleSpinBox::valueChanged, this,
-            [this](double value) { edit([&](model::EngineSettings& s) { s.flow.stylusResponse = value; }); });
+    const auto onDouble = [this](QDoubleSpinBox* box, double model::FlowSpec::*field) {
+        connect(box, &QDoubleSpinBox::valueChanged, this,
+                [=, this](double value) { edit(box, [&](model::EngineSettings& s) { s.flow.*field = value; }); });
+    };
+    onDouble(m_viscosity, &model::FlowSpec::viscosity);
+    onDouble(m_stylusRadius, &model::FlowSpec::stylusRadius);
+    onDouble(m_stylusResponse, &model::FlowSpec::stylusResponse);
     connect(m_gridX, &QSpinBox::valueChanged, this,
-            [this](int value) { edit([&](model::EngineSettings& s) { s.flow.gridX = value; }); });
+            [this](int value) { edit(m_gridX, [&](model::EngineSettings& s) { s.flow.gridX = value; }); });
     connect(m_gridY, &QSpinBox::valueChanged, this,
-            [this](int value) { edit([&](model::EngineSettings& s) { s.flow.gridY = value; }); });
-    connect(m_maxSpacing, &QDoubleSpinBox::valueChanged, this,
-            [this](double value) { edit([&](model::EngineSettings& s) { s.tracking.maxSpacing = value; }); });
+            [this](int value) { edit(m_gridY, [&](model::EngineSettings& s) { s.flow.gridY = value; }); });
+    connect(m_maxSpacing, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+        edit(m_maxSpacing, [&](model::EngineSettings& s) { s.tracking.maxSpacing = value; });
+    });
     connect(m_adaptive, &QCheckBox::toggled, this,
-            [this](bool on) { edit([&](model::EngineSettings& s) { s.tracking.adaptive = on; }); });
+            [this](bool on) { edit(nullptr, [&](model::EngineSettings& s) { s.tracking.adaptive = on; }); });
     connect(m_proximity, &QCheckBox::toggled, this,
-            [this](bool on) { edit([&](model::EngineSettings& s) { s.tracking.proximity = on; }); });
+            [this](bool on) { edit(nullptr, [&](model::EngineSettings& s) { s.tracking.proximity = on; }); });
     connect(m_areaCorrection, &QCheckBox::toggled, this,
-            [this](bool on) { edit([&](model::EngineSettings& s) { s.tracking.areaCorrection = on; }); });
-    connect(m_maxVertices, &QSpinBox::valueChanged, this,
-            [this](int value) { edit([&](model::EngineSettings& s) { s.tracking.maxVertices = value; }); });
+            [this](bool on) { edit(nullptr, [&](model::EngineSettings& s) { s.tracking.areaCorrection = on; }); });
+    connect(m_maxVertices, &QSpinBox::valueChanged, this, [this](int value) {
+        edit(m_maxVertices, [&](model::EngineSettings& s) { s.tracking.maxVertices = value; });
+    });
     connect(m_backend, &QComboBox::currentIndexChanged, this, [this] {
-        edit([&](model::EngineSettings& s) { s.backend = m_backend->currentData().toString(); });
+        edit(nullptr, [&](model::EngineSettings& s) { s.backend = m_backend->currentData().toString(); });
     });
     connect(m_device, &QComboBox::currentIndexChanged, this, [this] {
-        edit([&](model::EngineSettings& s) { s.device = m_device->currentData().toInt(); });
+        edit(nullptr, [&](model::EngineSettings& s) { s.device = m_device->currentData().toInt(); });
     });
 }
 
@@ -215,7 +218,7 @@ void SimulationPanel::setSettings(const model::EngineSettings& settings)
     showSettings();
 }
 
-void SimulationPanel::edit(const std::function<void(model::EngineSettings&)>& change)
+void SimulationPanel::edit(const QObject* spinBox, const std::function<void(model::EngineSettings&)>& change)
 {
     if (m_showing)
         return;
@@ -225,7 +228,7 @@ void SimulationPanel::edit(const std::function<void(model::EngineSettings&)>& ch
     m_settings = edited;
     showSettings();  // the mode follows the viscosity, the device combo the backend
     if (changed)
-        emit settingsEdited(m_settings);
+        emit settingsEdited(m_settings, spinBox ? spinBox->objectName() : QString());
 }
 
 void SimulationPanel::showSettings()

@@ -31,15 +31,18 @@ public:
     model::EngineSettings settings() const { return m_settings; }
 
 signals:
-    // Once per committed user edit that changed the settings; carries all of them.
-    void settingsEdited(const model::EngineSettings& settings);
+    // Once per committed user edit that changed the settings; carries all of them, and the object
+    // name of the spin box that changed them (empty for the other controls, whose every change
+    // is a step of its own: see model::Document::setSettings).
+    void settingsEdited(const model::EngineSettings& settings, const QString& control);
 
 private:
     QWidget* createFlowGroup();
     QWidget* createTrackingGroup();
     QWidget* createBackendGroup();
     void connectEdits();
-    void edit(const std::function<void(model::EngineSettings&)>& change);
+    // `spinBox`: the spin box being changed, or null.
+    void edit(const QObject* spinBox, const std::function<void(model::EngineSettings&)>& change);
     void showSettings();
     void showMode();
     void showDevices();

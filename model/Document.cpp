@@ -344,14 +344,22 @@ void Document::addRegions(const QString& commandText, const std::vector<NewRegio
     });
 }
 
-void Document::setSettings(const EngineSettings& settings)
+void Document::setSettings(const EngineSettings& settings, const QString& control)
 {
     if (settings == m_settings)
         return;
-    pushSimulationCommand(tr("Simulation settings"), [&] {
+    const auto apply = [&] {
         m_port.configure(settings);
         applySettings(settings);
-    });
+    };
+    const auto last = m_settingsCommand.lock();
+    if (!control.isEmpty() && control == m_settingsControl && last && openCommand() == last.get()) {
+        apply();  // the open command's end, taken when it closes, holds these settings
+        return;
+    }
+    pushSimulationCommand(tr("Simulation settings"), apply);
+    m_settingsCommand = static_cast<const DocumentCommand*>(m_undo.command(m_undo.index() - 1))->record();
+    m_settingsControl = control;
 }
 
 void Document::reset()

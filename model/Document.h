@@ -81,7 +81,10 @@ public:
     void beginStroke();
     void stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
     void addRegions(const QString& commandText, const std::vector<NewRegion>& regions);
-    void setSettings(const EngineSettings& settings);
+    // `control` names what changed them (a widget of the settings panel): changes by one control
+    // while the command it began is still the open top of the history join that command, so that
+    // holding a spin box's arrow down is one undo step. Empty: always a command of its own.
+    void setSettings(const EngineSettings& settings, const QString& control = {});
     void reset();  // back to the scene's starting picture
 
     // Index into regions() (paint order). Each returns false, changing nothing, when the edit is
@@ -150,6 +153,8 @@ private:
     std::size_t m_historyBudget = defaultHistoryBudget;
     bool m_rebuilding = false;          // rebuildHistory() replays commands without applying them
     std::weak_ptr<const CommandRecord> m_stroke;  // the last stroke begun; it takes the pen while its command is open
+    std::weak_ptr<const CommandRecord> m_settingsCommand;  // the last settings change, by m_settingsControl
+    QString m_settingsControl;
 };
 
 EngineSettings engineSettingsOf(const Scene& scene, const QString& backend, int device);

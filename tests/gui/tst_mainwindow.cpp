@@ -27,6 +27,7 @@
 #include <QSet>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -616,6 +617,31 @@ private slots:
         w.document().undoStack().undo();  // the mode
         QCOMPARE(w.document().settings().flow.viscosity, model::marblingPreset.viscosity);
         QVERIFY(test::child<QAction>(w, "modeMarbling")->isChecked());
+    }
+
+    // Holding a spin box's arrow key down is one undo step; another control starts a new one.
+    void stepsOfOneSpinBoxAreOneUndoStep()
+    {
+        MainWindow& w = *m_window;
+        const double viscosity = w.document().settings().flow.viscosity;
+        auto* box = test::child<QDoubleSpinBox>(w, "viscosity");
+        box->setFocus();
+        for (int i = 0; i < 5; ++i)
+            QTest::keyClick(box, Qt::Key_Up);
+        QCOMPARE_GT(w.document().settings().flow.viscosity, viscosity);
+        QCOMPARE(w.document().undoStack().count(), 1);
+        auto* grid = test::child<QSpinBox>(w, "gridX");
+        const int columns = grid->value();
+        QTest::keyClick(grid, Qt::Key_Up);
+        QCOMPARE(w.document().undoStack().count(), 2);
+        QTest::keyClick(box, Qt::Key_Up);  // the viscosity again, after another command: a new step
+        QCOMPARE(w.document().undoStack().count(), 3);
+        w.document().undoStack().undo();
+        w.document().undoStack().undo();
+        QCOMPARE(w.document().settings().flow.gridX, columns);
+        w.document().undoStack().undo();
+        QCOMPARE(w.document().settings().flow.viscosity, viscosity);
+        QCOMPARE(box->value(), viscosity);
     }
 
     // The mode's promise through the window: a stroke by mouse at half a canvas width per second
