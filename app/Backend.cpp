@@ -9,7 +9,7 @@ std::unique_ptr<sim::Simulation> makeBackend(const sim::SimulationSettings& sett
 {
     if (backend != QLatin1String("reference")) {
         try {
-            return std::make_unique<sim::opencl::OpenClSimulation>(settings, device);
+            return sim::opencl::makeSimulation(settings, "opencl", device);
         } catch (const sim::opencl::DeviceError& e) {
             const QString what = QString::fromUtf8(e.what());
             notice = QStringLiteral("OpenCL backend unavailable (%1); using the reference backend").arg(what.section('\n', 0, 0));
@@ -22,18 +22,14 @@ std::unique_ptr<sim::Simulation> makeBackend(const sim::SimulationSettings& sett
 
 QString backendLabel(const sim::Simulation& simulation)
 {
-    if (const auto* opencl = dynamic_cast<const sim::opencl::OpenClSimulation*>(&simulation))
-        return QStringLiteral("opencl (%1)").arg(QString::fromStdString(opencl->deviceName()));
-    return QString::fromStdString(simulation.backendName());
+    return QString::fromStdString(simulation.description());
 }
 
 QString vertexLimitLabel(const sim::Simulation& simulation)
 {
     const std::size_t maxVertices = simulation.settings().tracking.maxVertices;
-    if (const auto* opencl = dynamic_cast<const sim::opencl::OpenClSimulation*>(&simulation)) {
-        if (const std::size_t device = opencl->deviceVertexLimit(); device < maxVertices)
-            return QStringLiteral("the OpenCL device's vertex limit (%1)").arg(device);
-    }
+    if (const std::size_t device = simulation.hardwareVertexLimit(); device < maxVertices)
+        return QStringLiteral("the OpenCL device's vertex limit (%1)").arg(device);
     return QStringLiteral("max_vertices (%1)").arg(maxVertices);
 }
 

@@ -8,6 +8,7 @@
 #include "sim/Tracking.h"
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,6 +45,10 @@ public:
     virtual ~Simulation() = default;
 
     virtual std::string backendName() const = 0;
+    // The backend and where it runs, for people: "reference", "opencl (device name)".
+    virtual std::string description() const { return backendName(); }
+    // The most vertices the hardware holds, whatever the settings allow (unbounded on the host).
+    virtual std::size_t hardwareVertexLimit() const { return std::numeric_limits<std::size_t>::max(); }
     virtual const SimulationSettings& settings() const = 0;
 
     // Adds a region made of closed contours (filled together, even-odd); returns its index.

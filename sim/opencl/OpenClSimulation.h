@@ -21,9 +21,9 @@ public:
     ~OpenClSimulation() override;
 
     std::string backendName() const override { return "opencl"; }
-    std::string deviceName() const { return m_device.name(); }
+    std::string description() const override { return "opencl (" + m_device.name() + ")"; }
     // The most vertices the device holds (DeviceContours::deviceVertexLimit).
-    std::size_t deviceVertexLimit() const { return m_contours->deviceVertexLimit(); }
+    std::size_t hardwareVertexLimit() const override { return m_contours->deviceVertexLimit(); }
     const SimulationSettings& settings() const override { return m_settings; }
     int addRegion(const std::vector<Polygon>& contours) override;
     void stylus(Vec2 from, Vec2 to, double radius, double duration) override;

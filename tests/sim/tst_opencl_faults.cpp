@@ -65,7 +65,7 @@ private slots:
         qputenv("VF_OPENCL_MAX_VERTICES", "150");
         sim::opencl::OpenClSimulation sim(test::singleVortex(8.0, 0.01, false), std::nullopt);
         qunsetenv("VF_OPENCL_MAX_VERTICES");
-        QCOMPARE(sim.deviceVertexLimit(), std::size_t(150));
+        QCOMPARE(sim.hardwareVertexLimit(), std::size_t(150));
         QVERIFY(sim.settings().tracking.maxVertices > 150);
         sim.addRegion({sim::circle({0.5, 0.75}, 0.15, 0.01)});  // about 95 vertices; the vortex stretches it
         bool stopped = false;
