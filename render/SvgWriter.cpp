@@ -3,31 +3,20 @@
 // region (bottom to top) holding that region's single even-odd <path>. Hidden regions are kept,
 // as Inkscape keeps hidden layers: the layer gets style="display:none".
 //
-// Coordinates are exact (shortest round-trip), about 38 bytes per polyline vertex. libxml2-based
-// readers (xmllint, Inkscape, rsvg) refuse an attribute value over 10,000,000 bytes unless told
-// otherwise, so a region whose path data would pass kMaxPathData is cut in halves, again and
-// again, each half its own <path> in the region's layer (render/RegionHalves.h).
+// Limit: coordinates are exact (shortest round-trip), about 38 bytes per polyline vertex, so a
+// region of more than ~250k vertices in polyline mode has a `d` attribute over the 10 MB that
+// libxml2-based readers (xmllint, Inkscape, rsvg) accept by default. Bézier mode is far smaller.
 #include "render/Writers.h"
 
 #include "render/BufferedWriter.h"
-#include "render/RegionHalves.h"
 #include "render/Page.h"
 #include "render/PathEmitter.h"
 #include "render/XmlNames.h"
 
-#include <QBuffer>
 #include <QColor>
-
-#include <array>
-#include <string_view>
 
 namespace vf::render {
 namespace {
-
-// libxml2's XML_MAX_TEXT_LENGTH, less a margin.
-constexpr qsizetype kMaxPathData = 9'000'000;
-// Each cut at least about halves the vertices; past this many cuts a region is written as it is.
-constexpr int kMaxCuts = 40;
 
 // Absolute coordinates (relative ones would accumulate rounding), a command letter only where it
 // changes, shortest round-trip numbers: exact, and as compact as exactness allows.
@@ -100,48 +89,6 @@ void writeBackground(BufferedWriter& xml, const model::Drawing& drawing, UniqueX
     xml << "/>\n</g>\n";
 }
 
-// The region's path data, built in memory first so that its size is known before it is written.
-QByteArray pathData(const model::DrawnRegion& region, const PathStyle& style)
-{
-    QByteArray data;
-    QBuffer buffer(&data);
-    buffer.open(QIODevice::WriteOnly);
-    BufferedWriter out(buffer);
-    SvgPathData sink(out);
-    emitRegion(region, style, sink);
-    out.finish();  // a QBuffer takes every write
-    return data;
-}
-
-std::size_t vertexCount(const model::DrawnRegion& region)
-{
-    std::size_t count = 0;
-    for (const sim::Polygon& contour : region.contours)
-        count += contour.size();
-    return count;
-}
-
-// One <path> per piece of the region whose data fits in one attribute; the first takes `pathId`,
-// claimed already, the others pathId-2, pathId-3, ...
-void writePaths(BufferedWriter& xml, const model::DrawnRegion& region, const PathStyle& style, const QString& pathId,
-                const QString& label, UniqueXmlIds& ids, bool& first, int cuts)
-{
-    const QByteArray data = pathData(region, style);
-    if (data.size() > kMaxPathData && cuts < kMaxCuts) {
-        const std::size_t vertices = vertexCount(region);
-        const std::array<model::DrawnRegion, 2> halves = cutInHalves(region);
-        if (vertexCount(halves[0]) < vertices && vertexCount(halves[1]) < vertices) {
-            for (const model::DrawnRegion& half : halves)
-                writePaths(xml, half, style, pathId, label, ids, first, cuts + 1);
-            return;
-        }
-    }
-    xml << "<path id=\"" << (first ? pathId : ids.claim(pathId)) << "\" inkscape:label=\"" << label << '"';
-    writeFill(xml, region.color);
-    xml << " fill-rule=\"evenodd\" d=\"" << std::string_view(data.constData(), std::size_t(data.size())) << "\"/>\n";
-    first = false;
-}
-
 void writeRegion(BufferedWriter& xml, const model::DrawnRegion& region, const PathStyle& style,
                  UniqueXmlIds& ids)
 {
@@ -151,10 +98,12 @@ void writeRegion(BufferedWriter& xml, const model::DrawnRegion& region, const Pa
         << "\" inkscape:groupmode=\"layer\" inkscape:label=\"" << label << '"';
     if (!region.visible)
         xml << " style=\"display:none\"";
-    xml << ">\n";
-    bool first = true;
-    writePaths(xml, region, style, pathId, label, ids, first, 0);
-    xml << "</g>\n";
+    xml << ">\n<path id=\"" << pathId << "\" inkscape:label=\"" << label << '"';
+    writeFill(xml, region.color);
+    xml << " fill-rule=\"evenodd\" d=\"";
+    SvgPathData pathData(xml);
+    emitRegion(region, style, pathData);
+    xml << "\"/>\n</g>\n";
 }
 
 } // namespace

@@ -9,7 +9,6 @@
 #include "render/PathEmitter.h"
 #include "render/Writers.h"
 
-#include <QFileInfo>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
@@ -153,7 +152,6 @@ private slots:
     void svgBezierWithinTolerance();
     void svgBezierKeepsSquareCorners();
     void svgLargeRegionStreams();
-    void svgHugeRegionIsCutForLibxml2();
 
     void pdfPassesQpdfAndPdftoppm();
     void pageOfAnotherAspectCentresTheCanvas();
@@ -339,38 +337,6 @@ void TestExport::svgLargeRegionStreams()
         const Run result = run(xmllint, {QStringLiteral("--noout"), file});
         QVERIFY2(result.exitCode == 0, result.output.constData());
     }
-}
-
-// A ring of 2M + 200k vertices as a polyline: about 80 MB of path data, written as several <path>
-// elements of at most 10 MB each (libxml2's limit without XML_PARSE_HUGE), which xmllint takes
-// without --huge and rsvg paints as the one ring: its hole stays empty.
-void TestExport::svgHugeRegionIsCutForLibxml2()
-{
-    REQUIRE_TOOL(xmllint, "xmllint");
-    REQUIRE_TOOL(rsvg, "rsvg-convert");
-    model::Drawing drawing = probeDrawing();
-    drawing.regions[1].contours = {test::circlePolygon({0.7, 0.375}, 0.2, 2'000'000),
-                                   test::circlePolygon({0.7, 0.375}, 0.08, 200'000)};
-    const QString svgFile = path(QStringLiteral("huge.svg"));
-    render::ExportOptions options;
-    options.bezier = false;
-    EXPORT_OK(drawing, svgFile, options);
-    QVERIFY(QFileInfo(svgFile).size() > 50'000'000);
-
-    const ParsedSvg svg = parseSvg(svgFile);
-    QVERIFY2(svg.error.isEmpty(), qPrintable(svg.error));
-    QCOMPARE(svg.layers[2].label, QStringLiteral("ring"));
-    QVERIFY2(svg.layers[2].paths.size() >= 8, qPrintable(QString::number(svg.layers[2].paths.size())));
-    QCOMPARE(svg.layers[1].paths.size(), std::size_t(1));  // a region that fits stays one path
-
-    const Run lint = run(xmllint, {QStringLiteral("--noout"), svgFile});
-    QVERIFY2(lint.exitCode == 0 && lint.output.isEmpty(), lint.output.constData());
-    const QString pngFile = path(QStringLiteral("huge.png"));
-    const Run painted = run(rsvg, {QStringLiteral("-w"), QStringLiteral("200"), QStringLiteral("-h"), QStringLiteral("150"),
-                                   QStringLiteral("-o"), pngFile, svgFile});
-    QVERIFY2(painted.exitCode == 0, painted.output.constData());
-    const QString mismatch = checkProbes(QImage(pngFile), probes(kBackground), drawing);
-    QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
 }
 
 void TestExport::pdfPassesQpdfAndPdftoppm()
