@@ -1,12 +1,13 @@
 #pragma once
 // The commands of `vectorfluid` (README, "The command line"). Each returns the process exit code:
 // 0 done, 2 bad input (one line on stderr), 3 a limit was hit (what was done so far is written),
-// 4 `render --check-topology` found contours crossing (what was done so far is written).
+// 4 `render --check-topology` found contours crossing (what was done so far is written),
+// 130 interrupted by Ctrl+C or SIGTERM (no output written; frames already written stay).
 #include <QStringList>
 
 namespace vf::app {
 
-enum ExitCode { Done = 0, BadInput = 2, LimitHit = 3, TopologyBroken = 4 };
+enum ExitCode { Done = 0, BadInput = 2, LimitHit = 3, TopologyBroken = 4, Interrupted = 130 };
 
 int renderCommand(const QStringList& arguments);
 int devicesCommand(const QStringList& arguments);

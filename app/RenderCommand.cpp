@@ -2,7 +2,10 @@
 #include "app/Backend.h"
 #include "app/CommandLine.h"
 #include "app/Commands.h"
+#include "app/MemoryBudget.h"
 #include "app/RenderOptions.h"
+#include "app/RenderProgress.h"
+#include "app/RenderSignals.h"
 #include "model/AtomicFile.h"
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
@@ -43,7 +46,7 @@ model::SimulationFactory backendFactory(const RenderOptions& options, QString& n
 }
 
 QString writeStats(const QString& path, const model::Drawing& drawing, const RunTotals& totals,
-                   const sim::Simulation& simulation)
+                   const sim::Simulation& simulation, model::FileBatch& batch)
 {
     QJsonArray regions;
     for (const model::DrawnRegion& r : drawing.regions) {
@@ -66,11 +69,19 @@ QString writeStats(const QString& path, const model::Drawing& drawing, const Run
         {"limit_reached", totals.limitHit},
     };
     const QByteArray json = QJsonDocument(root).toJson();
-    return model::saveAtomically(path, [&json](QIODevice& file) { return model::writeAll(file, json); });
+    return batch.write(path, [&json](QIODevice& file) { return model::writeAll(file, json); });
 }
 
-// Fails before any simulation when an output could not be written at the end.
-QString checkOutputFolders(const RenderOptions& options)
+// frame-000042.svg: numbers padded to the same width (at least 6 digits), so names sort in order.
+QString framePath(const QString& dir, qint64 step, qint64 lastStep)
+{
+    const int digits = std::max<int>(6, QString::number(lastStep).size());
+    return QDir(dir).filePath(QStringLiteral("frame-%1.svg").arg(step, digits, 10, QLatin1Char('0')));
+}
+
+// Fails before any simulation when an output could not be written at the end: every file is
+// tried (a temporary created and removed beside it), so a read-only folder or file is found now.
+QString checkOutputs(const RenderOptions& options, qint64 steps)
 {
     QStringList files = options.outputs;
     if (!options.statsFile.isEmpty())
@@ -80,16 +91,16 @@ QString checkOutputFolders(const RenderOptions& options)
         if (!info.absoluteDir().exists())
             return QStringLiteral("%1: the folder %2 does not exist").arg(file, info.absolutePath());
     }
-    if (!options.framesDir.isEmpty() && !QDir().mkpath(options.framesDir))
-        return QStringLiteral("%1: cannot create the frames folder").arg(options.framesDir);
+    if (!options.framesDir.isEmpty()) {
+        if (!QDir().mkpath(options.framesDir))
+            return QStringLiteral("%1: cannot create the frames folder").arg(options.framesDir);
+        files << framePath(options.framesDir, 0, steps);
+    }
+    for (const QString& file : files) {
+        if (const QString error = model::checkWritable(file); !error.isEmpty())
+            return error;
+    }
     return {};
-}
-
-// frame-000042.svg: numbers padded to the same width (at least 6 digits), so names sort in order.
-QString framePath(const QString& dir, qint64 step, qint64 lastStep)
-{
-    const int digits = std::max<int>(6, QString::number(lastStep).size());
-    return QDir(dir).filePath(QStringLiteral("frame-%1.svg").arg(step, digits, 10, QLatin1Char('0')));
 }
 
 // --check-topology: contours must stay simple, and two contours that were apart when the later of
@@ -157,13 +168,17 @@ int renderCommand(const QStringList& arguments)
         printError(read.error);
         return BadInput;
     }
-    if (const QString error = checkOutputFolders(*options); !error.isEmpty()) {
+    const qint64 steps = options->steps.value_or(read.scene.time.steps);
+    const double dt = options->dt.value_or(read.scene.time.dt);
+    if (const QString error = checkMemory(read.scene, *options, availableMemory()); !error.isEmpty()) {
+        printError(QStringLiteral("%1: %2").arg(options->scene, error));
+        return BadInput;
+    }
+    if (const QString error = checkOutputs(*options, steps); !error.isEmpty()) {
         printError(error);
         return BadInput;
     }
-
-    const qint64 steps = options->steps.value_or(read.scene.time.steps);
-    const double dt = options->dt.value_or(read.scene.time.dt);
+    handleRenderSignals();
     RunTotals totals;
     QString notice;
     try {
@@ -179,6 +194,7 @@ int renderCommand(const QStringList& arguments)
             totals.limit = vertexLimit;
         }
         TopologyCheck topology;
+        RenderProgress progress(steps);
         auto checkTopology = [&] {
             const qint64 every = options->checkTopologyEvery;
             if (every > 0 && (totals.steps % every == 0 || totals.steps == steps || totals.limitHit))
@@ -186,7 +202,8 @@ int renderCommand(const QStringList& arguments)
         };
         error = writeFrame(0);
         checkTopology();
-        while (error.isEmpty() && totals.steps < steps && !totals.limitHit && totals.crossing.isEmpty()) {
+        while (error.isEmpty() && totals.steps < steps && !totals.limitHit && totals.crossing.isEmpty()
+               && !interruptRequested()) {
             const auto start = std::chrono::steady_clock::now();
             try {
                 if (runner.step(dt).vertexLimitReached) {
@@ -202,20 +219,35 @@ int renderCommand(const QStringList& arguments)
             totals.vertexSteps += qint64(runner.simulation().vertexCount());
             error = writeFrame(totals.steps);
             checkTopology();
+            progress.update(totals.steps, runner.simulation().vertexCount());
         }
+        // Every output goes to a temporary first; they are put in place together, and only when
+        // all of them were written and no interrupt came meanwhile.
         const model::Drawing drawing = runner.drawing();
+        model::FileBatch batch;
         for (const QString& out : options->outputs) {
-            if (error.isEmpty() && (error = render::exportDrawing(drawing, out, options->exportOptions)).isEmpty())
+            if (error.isEmpty() && !interruptRequested())
+                error = render::exportDrawing(drawing, out, options->exportOptions, batch);
+        }
+        if (error.isEmpty() && !options->statsFile.isEmpty() && !interruptRequested())
+            error = writeStats(options->statsFile, drawing, totals, runner.simulation(), batch);
+        if (error.isEmpty() && !interruptRequested() && (error = batch.commit()).isEmpty()) {
+            for (const QString& out : options->outputs)
                 QTextStream(stdout) << "wrote " << out << '\n';
         }
-        if (error.isEmpty() && !options->statsFile.isEmpty())
-            error = writeStats(options->statsFile, drawing, totals, runner.simulation());
     } catch (const std::exception& e) {
         error = QStringLiteral("%1: %2").arg(options->scene, QString::fromUtf8(e.what()));
     }
     if (!error.isEmpty()) {
         printError(error);  // the one line bad input gets; a fallback notice would only distract from it
         return BadInput;
+    }
+    if (interruptRequested()) {
+        printError(QStringLiteral("%1: interrupted at step %2 of %3; no output written")
+                       .arg(options->scene)
+                       .arg(totals.steps)
+                       .arg(steps));
+        return Interrupted;
     }
     if (!notice.isEmpty())
         printError(notice);

@@ -2,30 +2,90 @@
 
 #include <QSaveFile>
 
+#include <cerrno>
+
 namespace vf::model {
 
-QString saveAtomically(const QString& path, const std::function<QString(QIODevice&)>& write)
+namespace {
+
+QString failure(const QString& path, const QString& what) { return path + QStringLiteral(": ") + what.simplified(); }
+
+QString cannotWrite(const QSaveFile& file)
 {
-    auto failure = [&path](const QString& what) { return path + QStringLiteral(": ") + what.simplified(); };
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
-        return failure(QStringLiteral("cannot write: %1").arg(file.errorString()));
-    if (const QString error = write(file); !error.isEmpty()) {
-        file.cancelWriting();
-        return failure(error);
+    return failure(file.fileName(), QStringLiteral("cannot write: %1").arg(file.errorString()));
+}
+
+// What a failed write says: "disk full" for a full file system, else the system's own words.
+QString writeFailure(const QIODevice& device, int error)
+{
+    if (error == ENOSPC)
+        return QStringLiteral("write failed: disk full");
+    return QStringLiteral("write failed: %1").arg(device.errorString());
+}
+
+} // namespace
+
+FileBatch::FileBatch() = default;
+FileBatch::~FileBatch() = default;  // a QSaveFile not committed removes its temporary
+
+QString FileBatch::write(const QString& path, const FileContent& content)
+{
+    auto file = std::make_unique<QSaveFile>(path);
+    if (!file->open(QIODevice::WriteOnly | QIODevice::Unbuffered))
+        return cannotWrite(*file);
+    if (const QString error = content(*file); !error.isEmpty()) {
+        file->cancelWriting();
+        return failure(path, error);
     }
-    if (!file.commit())
-        return failure(QStringLiteral("cannot save: %1").arg(file.errorString()));
+    m_files.push_back(std::move(file));
+    return {};
+}
+
+QString FileBatch::commit()
+{
+    for (const std::unique_ptr<QSaveFile>& file : m_files) {
+        if (!file->commit())
+            return failure(file->fileName(), QStringLiteral("cannot save: %1").arg(file->errorString()));
+    }
+    m_files.clear();
+    return {};
+}
+
+QString saveAtomically(const QString& path, const FileContent& write)
+{
+    FileBatch batch;
+    if (const QString error = batch.write(path, write); !error.isEmpty())
+        return error;
+    return batch.commit();
+}
+
+QString checkWritable(const QString& path)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return cannotWrite(file);
+    file.cancelWriting();  // and the destructor removes the temporary
     return {};
 }
 
 QString writeAll(QIODevice& device, const QByteArray& bytes)
 {
-    const qint64 written = device.write(bytes);
-    if (written == bytes.size())
-        return {};
-    return written < 0 ? device.errorString()
-                       : QStringLiteral("wrote only %1 of %2 bytes").arg(written).arg(bytes.size());
+    return writeAll(device, bytes.constData(), bytes.size());
+}
+
+// A write that fills the disk part-way returns a short count with no error set; the next write of
+// the rest fails at once, and only that one says why.
+QString writeAll(QIODevice& device, const char* data, qint64 size)
+{
+    while (size > 0) {
+        errno = 0;
+        const qint64 written = device.write(data, size);
+        if (written <= 0)
+            return writeFailure(device, errno);
+        data += written;
+        size -= written;
+    }
+    return {};
 }
 
 } // namespace vf::model

@@ -1,5 +1,7 @@
 #include "render/BufferedWriter.h"
 
+#include "model/AtomicFile.h"
+
 #include <charconv>
 
 namespace vf::render {
@@ -55,11 +57,8 @@ void BufferedWriter::flushIfFull()
 
 void BufferedWriter::flush()
 {
-    if (m_error.isEmpty() && !m_buffer.empty()) {
-        const auto size = static_cast<qint64>(m_buffer.size());
-        if (m_device.write(m_buffer.data(), size) != size)
-            m_error = QStringLiteral("write failed: %1").arg(m_device.errorString());
-    }
+    if (m_error.isEmpty() && !m_buffer.empty())
+        m_error = model::writeAll(m_device, m_buffer.data(), static_cast<qint64>(m_buffer.size()));
     m_buffer.clear();
 }
 

@@ -9,6 +9,7 @@
 // lies below and, where needed, falls back to an image at its fallback resolution (300 ppi).
 #include "render/Writers.h"
 
+#include "model/AtomicFile.h"
 #include "render/EpsBoundingBox.h"
 #include "render/Page.h"
 #include "render/PathEmitter.h"
@@ -34,13 +35,18 @@ struct ContextDeleter {
 using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
 using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
 
-cairo_status_t writeToDevice(void* closure, const unsigned char* data, unsigned int length)
-{
-    auto* device = static_cast<QIODevice*>(closure);
-    const auto size = static_cast<qint64>(length);
-    return device->write(reinterpret_cast<const char*>(data), size) == size ? CAIRO_STATUS_SUCCESS
-                                                                            : CAIRO_STATUS_WRITE_ERROR;
-}
+// Cairo's write callback gets a status back only, so the reason is kept here for the message.
+struct DeviceStream {
+    QIODevice& device;
+    QString error;
+
+    static cairo_status_t write(void* closure, const unsigned char* data, unsigned int length)
+    {
+        auto* self = static_cast<DeviceStream*>(closure);
+        self->error = model::writeAll(self->device, reinterpret_cast<const char*>(data), qint64(length));
+        return self->error.isEmpty() ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+    }
+};
 
 class CairoPathSink final : public PathSink {
 public:
@@ -89,28 +95,29 @@ void draw(cairo_t* context, const model::Drawing& drawing, const ExportOptions& 
     }
 }
 
-QString describe(cairo_status_t status, const QIODevice& out)
+// writeError: what the stream said when it failed (status CAIRO_STATUS_WRITE_ERROR).
+QString describe(cairo_status_t status, const QString& writeError)
 {
     if (status == CAIRO_STATUS_WRITE_ERROR)
-        return QStringLiteral("write failed: %1").arg(out.errorString());
+        return writeError;
     return QStringLiteral("cairo: %1").arg(QString::fromUtf8(cairo_status_to_string(status)));
 }
 
 // Draws, then finishes the surface, which is when cairo writes (most of) the file.
 QString render(cairo_surface_t* surface, const model::Drawing& drawing, const ExportOptions& options,
-               const QIODevice& out)
+               const QString& writeError)
 {
     if (const cairo_status_t status = cairo_surface_status(surface))
-        return describe(status, out);
+        return describe(status, writeError);
     {
         const ContextPtr context(cairo_create(surface));
         draw(context.get(), drawing, options);
         if (const cairo_status_t status = cairo_status(context.get()))
-            return describe(status, out);
+            return describe(status, writeError);
     }
     cairo_surface_finish(surface);
     if (const cairo_status_t status = cairo_surface_status(surface))
-        return describe(status, out);
+        return describe(status, writeError);
     return {};
 }
 
@@ -119,8 +126,9 @@ QString render(cairo_surface_t* surface, const model::Drawing& drawing, const Ex
 QString writePdf(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out)
 {
     const Page page = pageFor(drawing, options);
-    const SurfacePtr surface(cairo_pdf_surface_create_for_stream(writeToDevice, &out, page.width, page.height));
-    return render(surface.get(), drawing, options, out);
+    DeviceStream stream{out, {}};
+    const SurfacePtr surface(cairo_pdf_surface_create_for_stream(DeviceStream::write, &stream, page.width, page.height));
+    return render(surface.get(), drawing, options, stream.error);
 }
 
 QString writeEps(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out)
@@ -133,7 +141,7 @@ QString writeEps(const model::Drawing& drawing, const ExportOptions& options, QI
     const SurfacePtr surface(
         cairo_ps_surface_create_for_stream(EpsBoundingBoxFilter::write, &filter, page.width, page.height));
     cairo_ps_surface_set_eps(surface.get(), true);
-    const QString error = render(surface.get(), drawing, options, out);
+    const QString error = render(surface.get(), drawing, options, filter.error());
     const QString filterError = filter.finish();
     return error.isEmpty() ? filterError : error;
 }

@@ -1,5 +1,7 @@
 #include "render/EpsBoundingBox.h"
 
+#include "model/AtomicFile.h"
+
 namespace vf::render {
 
 EpsBoundingBoxFilter::EpsBoundingBoxFilter(QIODevice& out, int width, int height)
@@ -49,8 +51,8 @@ bool EpsBoundingBoxFilter::forwardLine()
 
 bool EpsBoundingBoxFilter::forward(const char* data, qint64 length)
 {
-    if (m_error.isEmpty() && m_out.write(data, length) != length)
-        m_error = QStringLiteral("write failed: %1").arg(m_out.errorString());
+    if (m_error.isEmpty())
+        m_error = model::writeAll(m_out, data, length);
     return m_error.isEmpty();
 }
 

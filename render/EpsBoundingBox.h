@@ -20,6 +20,8 @@ public:
 
     // Passes on an unterminated last line, if any; returns an empty string or what went wrong.
     QString finish();
+    // What went wrong writing so far, or an empty string.
+    const QString& error() const { return m_error; }
 
 private:
     bool filter(const char* data, qint64 length);

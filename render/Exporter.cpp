@@ -85,6 +85,15 @@ QString failure(const QString& path, const QString& what)
 
 QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options)
 {
+    model::FileBatch batch;
+    if (const QString error = exportDrawing(drawing, path, options, batch); !error.isEmpty())
+        return error;
+    return batch.commit();
+}
+
+QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options,
+                      model::FileBatch& batch)
+{
     const Format* format = formatFor(path);
     if (!format)
         return failure(path, QStringLiteral("unknown export format (use .svg, .pdf, .eps or .png)"));
@@ -98,7 +107,7 @@ QString exportDrawing(const model::Drawing& drawing, const QString& path, const 
                                  .arg(QString::fromLatin1(format->suffix).toUpper())
                                  .arg(format->maxPageSide));
 
-    return model::saveAtomically(path, [&](QIODevice& file) { return format->write(drawing, options, file); });
+    return batch.write(path, [&](QIODevice& file) { return format->write(drawing, options, file); });
 }
 
 bool isExportSuffix(const QString& path)

@@ -1,5 +1,6 @@
 #pragma once
 // One entry point for every export format; the format follows the file suffix.
+#include "model/AtomicFile.h"
 #include "model/Drawing.h"
 
 #include <QString>
@@ -18,7 +19,18 @@ struct ExportOptions {
 // Writes `drawing` to `path` (.svg .pdf .eps .png), atomically: a temporary file renamed into
 // place only when complete. Returns an empty string, or one line saying what went wrong.
 QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options);
+// The same into `batch`: the file is put in place only when the batch commits.
+QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options,
+                      model::FileBatch& batch);
 
 bool isExportSuffix(const QString& path);
+
+// The size of a PNG export in pixels, as doubles: sizes beyond what an image can hold are
+// reported, not wrapped.
+struct RasterSize {
+    double width = 0;
+    double height = 0;
+};
+RasterSize pngPixels(const model::Drawing& drawing, const ExportOptions& options);
 
 } // namespace vf::render

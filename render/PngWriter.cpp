@@ -2,6 +2,7 @@
 // headless command line can use it with a QCoreApplication or none at all.
 #include "render/Writers.h"
 
+#include "model/AtomicFile.h"
 #include "render/Page.h"
 #include "render/PathEmitter.h"
 
@@ -39,15 +40,11 @@ private:
 
 QSize pixelSize(const model::Drawing& drawing, const ExportOptions& options)
 {
-    const Page page = pageFor(drawing, options);
-    const double pixelsPerPoint = options.dpi / kPointsPerInch;
-    const auto pixels = [&](double points) { return std::max(1.0, std::round(points * pixelsPerPoint)); };
+    const RasterSize size = pngPixels(drawing, options);
     // Beyond int range QImage cannot even be asked; report it as too large below.
-    const double width = pixels(page.width);
-    const double height = pixels(page.height);
-    if (width > INT_MAX || height > INT_MAX)
+    if (size.width > INT_MAX || size.height > INT_MAX)
         return {};
-    return {static_cast<int>(width), static_cast<int>(height)};
+    return {static_cast<int>(size.width), static_cast<int>(size.height)};
 }
 
 void paint(QImage& image, const model::Drawing& drawing, const ExportOptions& options)
@@ -81,6 +78,14 @@ void paint(QImage& image, const model::Drawing& drawing, const ExportOptions& op
 
 } // namespace
 
+RasterSize pngPixels(const model::Drawing& drawing, const ExportOptions& options)
+{
+    const Page page = pageFor(drawing, options);
+    const double pixelsPerPoint = options.dpi / kPointsPerInch;
+    const auto pixels = [&](double points) { return std::max(1.0, std::round(points * pixelsPerPoint)); };
+    return {pixels(page.width), pixels(page.height)};
+}
+
 QString writePng(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out)
 {
     const QSize size = pixelSize(drawing, options);
@@ -98,9 +103,7 @@ QString writePng(const model::Drawing& drawing, const ExportOptions& options, QI
     QImageWriter writer(&encoded, "png");
     if (!writer.write(image))
         return QStringLiteral("PNG: %1").arg(writer.errorString());
-    if (out.write(encoded.data()) != encoded.data().size())
-        return QStringLiteral("write failed: %1").arg(out.errorString());
-    return {};
+    return model::writeAll(out, encoded.data());
 }
 
 } // namespace vf::render

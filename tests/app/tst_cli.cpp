@@ -3,6 +3,7 @@
 // files read back by an XML parser and by the real readers (qpdf, Ghostscript, pdftoppm), the
 // stats JSON against the geometry, and determinism of the reference backend.
 #include "../TestFiles.h"
+#include "CliRun.h"
 #include "../render/SvgReadBack.h"
 #include "../render/TestGeometry.h"
 
@@ -24,10 +25,10 @@
 #include <numeric>
 
 using namespace vf;
+using namespace vf::test;
 
 namespace {
 
-const QString kBinary = QStringLiteral(VF_BINARY);
 const QString kBadDir = QStringLiteral(VF_TEST_DATA "/bad");
 
 // Two circles, a stylus stroke and a drop ("splash" at t = 0.1) in a 32×32 fluid: 50 steps of
@@ -38,49 +39,6 @@ const qint64 kStirredSteps = 50;
 const QString kVertexLimit = QStringLiteral(VF_TEST_DATA "/scenes/vertex-limit.vfscene");
 const qint64 kVertexLimitMax = 200;
 const qint64 kVertexLimitSteps = 200;
-
-struct CliResult {
-    int exitCode = -1;  // -1: crashed or hung
-    QByteArray out;
-    QByteArray err;
-};
-
-CliResult runProgram(const QString& program, const QStringList& arguments)
-{
-    QProcess process;
-    process.start(program, arguments);
-    const bool finished = process.waitForFinished(60000);
-    CliResult result{-1, process.readAllStandardOutput(), process.readAllStandardError()};
-    if (finished && process.exitStatus() == QProcess::NormalExit)
-        result.exitCode = process.exitCode();
-    return result;
-}
-
-CliResult runCli(const QStringList& arguments) { return runProgram(kBinary, arguments); }
-
-QString describe(const CliResult& r)
-{
-    return QStringLiteral("exit %1, stdout [%2], stderr [%3]")
-        .arg(r.exitCode)
-        .arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
-}
-
-// Exit 2, nothing on stdout, exactly one line on stderr containing every one of `needles`.
-QString checkOneLineError(const CliResult& r, const QStringList& needles, int exitCode = 2)
-{
-    const QString err = QString::fromUtf8(r.err);
-    if (r.exitCode != exitCode)
-        return QStringLiteral("expected exit %1: %2").arg(exitCode).arg(describe(r));
-    if (exitCode == 2 && !r.out.isEmpty())
-        return QStringLiteral("stdout is not empty: ") + describe(r);
-    if (r.err.count('\n') != 1 || !r.err.endsWith('\n'))
-        return QStringLiteral("stderr is not exactly one line: ") + describe(r);
-    for (const QString& needle : needles) {
-        if (!err.contains(needle))
-            return QStringLiteral("stderr lacks '%1': %2").arg(needle, describe(r));
-    }
-    return {};
-}
 
 // Exit 0 and a quiet stderr: nothing, or on a machine where no OpenCL device can run the scene,
 // only the one line that says the reference backend runs instead.
@@ -219,12 +177,6 @@ const QStringList kStirredRegions{QStringLiteral("ink"), QStringLiteral("madder"
     const QString variable = QStandardPaths::findExecutable(QStringLiteral(name));                       \
     if (variable.isEmpty())                                                                              \
         QSKIP(name " is not installed");
-
-#define CHECK_OK(expression)                                                                             \
-    do {                                                                                                 \
-        const QString problem_ = (expression);                                                           \
-        QVERIFY2(problem_.isEmpty(), qPrintable(problem_));                                              \
-    } while (false)
 
 } // namespace
 

@@ -458,7 +458,7 @@ private slots:
             QVERIFY(limit.active());
             error = writeProjectFile(fluidProject(), path);
         }
-        verifyOneLineError(error, path, u"wrote only"_s);
+        verifyOneLineError(error, path, u"write failed: File too large"_s);
         QCOMPARE(test::readAll(path), previous);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{u"p.vfproj"_s});
 #else

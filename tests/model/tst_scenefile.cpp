@@ -295,7 +295,7 @@ private slots:
             QVERIFY(limit.active());
             error = writeSceneFile(richScene(), path);
         }
-        verifyOneLineError(error, path, u"wrote only"_s);
+        verifyOneLineError(error, path, u"write failed: File too large"_s);
         QCOMPARE(readBytes(path), previous);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{u"scene.vfscene"_s});
 #else

@@ -1,0 +1,31 @@
+#pragma once
+// The progress line of a long render on a terminal: "step 1200 of 50000, 84311 vertices, about
+// 3 min left", rewritten in place on stderr. It appears only once a run has taken a few seconds,
+// and never when stderr is not a terminal (a pipe, a log file), so scripts see only real errors.
+#include <QtGlobal>
+
+#include <chrono>
+#include <cstddef>
+
+namespace vf::app {
+
+class RenderProgress {
+public:
+    explicit RenderProgress(qint64 steps);
+    ~RenderProgress();  // clears the line
+    RenderProgress(const RenderProgress&) = delete;
+    RenderProgress& operator=(const RenderProgress&) = delete;
+
+    void update(qint64 step, std::size_t vertices);
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    const qint64 m_steps;
+    const bool m_enabled;
+    const Clock::time_point m_start = Clock::now();
+    Clock::time_point m_lastShown;
+    bool m_shown = false;
+};
+
+} // namespace vf::app
