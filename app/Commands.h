@@ -1,5 +1,5 @@
 #pragma once
-// The commands of `vectorfluid` (README, "The command line"). Each returns the process exit code:
+// The commands of `vectorfluid` (docs/command-line.md). Each returns the process exit code:
 // 0 done, 2 bad input (one line on stderr), 3 a limit was hit (what was done so far is written),
 // 4 `render --check-topology` found contours crossing (what was done so far is written),
 // 130 interrupted by Ctrl+C or SIGTERM (no output written; frames already written stay).

@@ -1,4 +1,4 @@
-// `vectorfluid render SCENE ...`: run a scene headless and write files (README, "The command line").
+// `vectorfluid render SCENE ...`: run a scene headless and write files (docs/command-line.md).
 #include "app/Backend.h"
 #include "app/CommandLine.h"
 #include "app/Commands.h"

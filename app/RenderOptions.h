@@ -24,7 +24,7 @@ struct RenderOptions {
     qint64 checkTopologyEvery = 0;  // --check-topology K: an exact crossing check every K steps; 0: none
 };
 
-// The synopsis of `vectorfluid render` (README, "The command line").
+// The synopsis of `vectorfluid render` (docs/command-line.md).
 extern const char* const renderUsage;
 
 // Declares render's options and its SCENE argument to `parser`.

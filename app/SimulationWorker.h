@@ -1,8 +1,9 @@
 #pragma once
-// The live simulation, on its own thread (docs/ARCHITECTURE.md, "The app"): it owns the Simulation (and so its OpenCL
+// The live simulation, on its own thread (docs/ARCHITECTURE.md, "Threads"): it owns the Simulation (and so its OpenCL
 // context, created on this thread), steps it while playing, runs the requests the GUI queues
-// between steps, and hands out immutable frames. Like Qt's mandelbrot example it coalesces: a
-// new frame is made only once the GUI has taken the previous one.
+// between steps, and hands out immutable frames. Frames do not queue: a new frame is made only
+// once the GUI has taken the previous one. (Qt's mandelbrot example coalesces requests instead,
+// through its `restart` flag.)
 #include "model/EngineSettings.h"
 #include "model/Frame.h"
 #include "model/SceneScript.h"

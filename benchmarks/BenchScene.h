@@ -1,5 +1,5 @@
 #pragma once
-// What the benchmarks share: the backends, and the scene of docs/BENCHMARKS.md (a 64×64 fluid
+// What the benchmarks share: the backends, and docs/BENCHMARKS.md's "The stirred scene" (a 64×64 fluid
 // stirred by a circling pen, with a lattice of small ink circles of about N vertices in all).
 #include "sim/Simulation.h"
 #include "sim/opencl/OpenClSimulation.h"

@@ -1,4 +1,4 @@
-// vf_bench: the stirred scene of docs/BENCHMARKS.md. Vertex-steps per second of the full step
+// vf_bench: docs/BENCHMARKS.md, "The stirred scene". Vertex-steps per second of the full step
 // (fluid solve, RK4 advection, adaptive spacing with the proximity term, refinement) at 100k and 1M vertices for
 // every backend, beside a naive scalar RK4 loop over the same number of points in the same flow
 // (and, for the OpenCL backend, its bare RK4 kernel), in one run of one binary. docs/BENCHMARKS.md

@@ -1,4 +1,4 @@
-// vf_session: the session benchmarks of docs/BENCHMARKS.md. Plays a generated session (sessions/)
+// vf_session: the session benchmarks (docs/BENCHMARKS.md, "Sessions"). Plays a generated session (sessions/)
 // or a scene file through one backend and reports, as one line of JSON, the wall time of its steps,
 // vertex-steps per second, the peak vertex count, the process's peak resident memory and the
 // share of each phase; or runs the naive scalar RK4 loop over the vertex counts another run saved.

@@ -1,7 +1,7 @@
 #pragma once
 // The open piece of work: the scene it started from, the region looks, the engine settings and
 // the undo history, over a live simulation it reaches only through a SimulationPort. Lives on the
-// GUI thread; every user action is one command on its QUndoStack (docs/ARCHITECTURE.md, "The app: threads, documents and undo").
+// GUI thread; every user action is one command on its QUndoStack (docs/ARCHITECTURE.md, "Undo and the document").
 #include "model/DocumentCommand.h"
 #include "model/Frame.h"
 #include "model/Project.h"
@@ -105,7 +105,7 @@ public:
     void takeFrame(const Frame& frame);
 
     // ---- History memory. ----------------------------------------------------------------------
-    // The history keeps the simulation states of its commands (about 48 bytes per vertex each).
+    // The history keeps the simulation states of its commands (about 41 bytes per vertex each).
     // Past the budget, the oldest commands are dropped from the history (never corrupted): they
     // can no longer be undone. At least the newest command is always kept.
     void setHistoryBudget(std::size_t bytes);

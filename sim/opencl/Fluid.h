@@ -6,7 +6,7 @@
 // - HostFluid: sim/FluidSolver on the host, in double, uploading the stream functions (three
 //   small lattices) after each step. On a CPU device the solver's launches and barriers over a
 //   grid of a few thousand cells cost more than the host's single-threaded solve (the session
-//   benchmarks in docs/BENCHMARKS.md measure both).
+//   benchmarks in docs/BENCHMARKS.md, "Sessions", measure both).
 #include "sim/FluidSolver.h"
 #include "sim/opencl/Device.h"
 #include "sim/opencl/FlowBinding.h"

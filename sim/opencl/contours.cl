@@ -1,7 +1,7 @@
 // The contour store of DeviceContours and what every contour kernel shares: neighbours along a
 // contour, the motion (RK4 through the flow, eq. 1, or an ink drop's push), advection, strain.
 //
-// Layout (sim/opencl/DeviceContours.cpp, docs/ARCHITECTURE.md "OpenCL contour tracking"): all
+// Layout (sim/opencl/DeviceContours.cpp, docs/opencl-backend.md, "Storage"): all
 // contours live in flat arrays, each contour contiguous and in order, vertex i of the store
 // belonging to contour contourOf[i], which occupies [contourOffset[c], contourOffset[c] +
 // contourCount[c]). A vertex's neighbours are i ± 1 wrapped inside that range. motion[i] holds

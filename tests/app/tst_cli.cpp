@@ -1,4 +1,4 @@
-// The headless command line (README, "The command line"), run as the real `vectorfluid` binary
+// The headless command line (docs/command-line.md), run as the real `vectorfluid` binary
 // through QProcess: exit codes, the one-line error contract, what is (and is not) written, the
 // files read back by an XML parser and by the real readers (qpdf, Ghostscript, pdftoppm), the
 // stats JSON against the geometry, and determinism of the reference backend.
@@ -96,7 +96,7 @@ std::size_t crossingsIn(const QString& svgFile)
     return sim::countCrossings(contours);
 }
 
-// The stats file's shape and internal consistency (README, --stats).
+// The stats file's shape and internal consistency (docs/command-line.md, "Stats").
 QString checkStats(const QJsonObject& stats, qint64 steps)
 {
     const QJsonArray regions = stats.value(QStringLiteral("regions")).toArray();

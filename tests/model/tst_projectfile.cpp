@@ -408,7 +408,7 @@ private slots:
 
     // A history of states as the OpenCL backend leaves them (float32 values widened to double,
     // smooth along the contours and the grid): packed and deflated, they take a fifth of the plain
-    // version 1 file or less (docs/BENCHMARKS.md has a played project's figures).
+    // version 1 file or less (docs/BENCHMARKS.md, "Project files", has a played project's figures).
     void packedStatesAreAFifthOfPlainOnes()
     {
         Project project = fluidProject();
