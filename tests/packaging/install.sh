@@ -16,6 +16,12 @@ usr/share/metainfo/$id.metainfo.xml
 usr/share/mime/packages/$id.xml"
 actual=$(cd "$tmp/root" && find . -type f -o -type l | sed 's|^\./||' | sort)
 [ "$actual" = "$expected" ] || { printf 'installed:\n%s\nexpected:\n%s\n' "$actual" "$expected"; exit 1; }
+# As installed, the metainfo finds its launcher and icon.
+if command -v appstreamcli >/dev/null; then
+  appstreamcli validate-tree --no-net "$tmp/root"
+else
+  echo "SKIP installed tree validation: appstreamcli is not installed (scripts/setup installs it)"
+fi
 
 bin=$tmp/root/usr/bin/vectorfluid
 mkdir "$tmp/work" "$tmp/home"
