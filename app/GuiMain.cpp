@@ -30,6 +30,8 @@ int guiMain(int argc, char** argv)
     QApplication::setApplicationName(QStringLiteral("vectorfluid"));
     QApplication::setOrganizationName(QStringLiteral("vectorfluid"));
     QApplication::setApplicationDisplayName(QStringLiteral("Vector Fluid"));
+    // The installed launcher (resources/desktop): Wayland compositors show its name and icon.
+    QApplication::setDesktopFileName(QStringLiteral("org.vectorfluid.VectorFluid"));
     const QStringList arguments = QApplication::arguments().mid(1);
 
     MainWindow window;
