@@ -174,11 +174,7 @@ void RegionsDock::raiseCurrent(int by)
     const int target = row - by;
     if (target < 0 || target >= m_model.rowCount())
         return;
-    const QString name = index.data().toString();
-    m_model.moveRows({}, row, 1, {}, by > 0 ? target : target + 1);
-    const QModelIndexList moved = m_model.match(m_model.index(0), Qt::DisplayRole, name, 1, Qt::MatchExactly);
-    if (!moved.isEmpty())
-        m_view->setCurrentIndex(moved.front());
+    m_model.moveRows({}, row, 1, {}, by > 0 ? target : target + 1);  // the current row moves with it
 }
 
 } // namespace vf::app

@@ -2,7 +2,9 @@
 
 #include <QSet>
 
+#include <algorithm>
 #include <map>
+#include <optional>
 #include <unordered_set>
 
 namespace vf::model {
@@ -174,12 +176,50 @@ QString Document::unusedName(const QString& base) const
     return unusedNameIn(m_regions, base);
 }
 
+namespace {
+
+bool sameRegions(RegionTable::const_iterator first, RegionTable::const_iterator last,
+                 RegionTable::const_iterator other)
+{
+    return std::equal(first, last, other, [](const RegionLook& a, const RegionLook& b) { return a.simIndex == b.simIndex; });
+}
+
+// Where `after` holds the regions of `before` with one of them moved: its index before and after.
+std::optional<std::pair<int, int>> singleMove(const RegionTable& before, const RegionTable& after)
+{
+    if (before.size() != after.size())
+        return std::nullopt;
+    const auto differs = [&](std::size_t i) { return before[i].simIndex != after[i].simIndex; };
+    std::size_t first = 0, last = before.size();
+    while (first < last && !differs(first))
+        ++first;
+    while (last > first && !differs(last - 1))
+        --last;
+    if (last - first < 2)
+        return std::nullopt;
+    const auto b = before.begin(), a = after.begin();
+    const int down = int(first), up = int(last - 1);
+    if (before[first].simIndex == after[last - 1].simIndex && sameRegions(b + down + 1, b + up + 1, a + down))
+        return std::pair{down, up};
+    if (before[last - 1].simIndex == after[first].simIndex && sameRegions(b + down, b + up, a + down + 1))
+        return std::pair{up, down};
+    return std::nullopt;
+}
+
+} // namespace
+
 void Document::replaceRegions(const RegionTable& regions)
 {
-    const bool sameRows = regions.size() == m_regions.size()
-        && std::equal(regions.begin(), regions.end(), m_regions.begin(),
-                      [](const RegionLook& a, const RegionLook& b) { return a.simIndex == b.simIndex; });
-    if (!sameRows) {
+    if (const auto move = singleMove(m_regions, regions)) {
+        // Views keep their selection through a move, which a reset would clear.
+        const auto [from, to] = *move;
+        emit regionAboutToMove(from, to);
+        const RegionLook moved = m_regions[std::size_t(from)];
+        m_regions.erase(m_regions.begin() + from);
+        m_regions.insert(m_regions.begin() + to, moved);
+        emit regionMoved();
+    }
+    if (regions.size() != m_regions.size() || !sameRegions(regions.begin(), regions.end(), m_regions.begin())) {
         emit regionsAboutToBeReset();
         m_regions = regions;
         emit regionsReset();

@@ -120,6 +120,9 @@ public:
 signals:
     void regionsAboutToBeReset();
     void regionsReset();
+    // One region moved in the paint order, from index `from` to index `to` (indices before the move).
+    void regionAboutToMove(int from, int to);
+    void regionMoved();
     void regionChanged(int index);
     void settingsChanged(const vf::model::EngineSettings& settings);
     void historyTrimmed(int commands);

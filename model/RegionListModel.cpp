@@ -18,6 +18,13 @@ RegionListModel::RegionListModel(Document& document, QObject* parent)
 {
     connect(&document, &Document::regionsAboutToBeReset, this, &RegionListModel::beginResetModel);
     connect(&document, &Document::regionsReset, this, &RegionListModel::endResetModel);
+    connect(&document, &Document::regionAboutToMove, this, [this](int from, int to) {
+        // Rows run top first; Qt's destination is the row the moved one goes before, counted
+        // before the move.
+        const int source = rowOf(from), target = rowOf(to);
+        beginMoveRows({}, source, source, {}, target > source ? target + 1 : target);
+    });
+    connect(&document, &Document::regionMoved, this, &RegionListModel::endMoveRows);
     connect(&document, &Document::regionChanged, this, [this](int i) {
         const QModelIndex changed = index(rowOf(i));
         emit dataChanged(changed, changed);

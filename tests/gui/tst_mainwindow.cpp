@@ -428,6 +428,7 @@ private slots:
         QTest::mouseClick(test::child<QPushButton>(w, "lower"), Qt::LeftButton);
         QCOMPARE(w.document().regions()[0].name, QStringLiteral("header"));
         QCOMPARE(model.index(1, 0).data().toString(), QStringLiteral("header"));
+        QCOMPARE(view.currentIndex().data().toString(), QStringLiteral("header"));  // the selection moved with it
         QCOMPARE(w.document().undoStack().count(), 3);
 
         w.document().undoStack().undo();

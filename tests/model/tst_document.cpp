@@ -405,6 +405,41 @@ private slots:
         doc.undoStack().undo();
         QCOMPARE(model.index(0).data().toString(), QStringLiteral("top"));
     }
+
+    // A reorder, its undo and its redo move one row: no reset, and an index held on the moved row
+    // (a view's selection) follows it.
+    void regionReorderMovesTheRow_data()
+    {
+        QTest::addColumn<int>("from");
+        QTest::addColumn<int>("to");
+        QTest::newRow("bottom to top") << 0 << 3;
+        QTest::newRow("top to bottom") << 3 << 0;
+        QTest::newRow("one up") << 1 << 2;
+    }
+    void regionReorderMovesTheRow()
+    {
+        QFETCH(int, from);
+        QFETCH(int, to);
+        FakePort port;
+        Document doc(port);
+        RegionListModel model(doc);
+        QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        doc.openScene(sceneWithRegions(4), QStringLiteral("reference"));
+        const QString name = doc.regions()[std::size_t(from)].name;
+        const QPersistentModelIndex held(model.index(model.rowOf(from)));
+        QSignalSpy resets(&model, &QAbstractItemModel::modelReset);
+        QSignalSpy moves(&model, &QAbstractItemModel::rowsMoved);
+        QVERIFY(doc.moveRegion(from, to));
+        QCOMPARE(doc.regions()[std::size_t(to)].name, name);
+        QCOMPARE(held.row(), model.rowOf(to));
+        QCOMPARE(held.data().toString(), name);
+        doc.undoStack().undo();
+        QCOMPARE(held.row(), model.rowOf(from));
+        doc.undoStack().redo();
+        QCOMPARE(held.row(), model.rowOf(to));
+        QCOMPARE(moves.count(), 3);
+        QCOMPARE(resets.count(), 0);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestDocument)
