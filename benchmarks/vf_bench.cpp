@@ -22,6 +22,7 @@
 #include "sim/ProximityGrid.h"
 #include "sim/Simulation.h"
 #include "sim/SpacingField.h"
+#include "sim/opencl/ContourCodes.h"
 #include "sim/opencl/DeviceContours.h"
 #include "sim/opencl/DeviceFluid.h"
 #include "sim/opencl/KernelSources.h"
@@ -208,7 +209,7 @@ void bareRk4KernelBenchmark(benchmark::State& state, std::int64_t target)
     const cl::Program program =
         device->build(joinedKernelSources({"flow.h.cl", "flow_fluid.cl", "workgroup.cl", "contours.cl"}),
                       "contours.cl", commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc +
-                                         "2 -DVF_ACC4=" + acc + "4");
+                                         "2 -DVF_ACC4=" + acc + "4" + contourCodeDefinitions());
     cl::Kernel advect(program, "advect");
     std::vector<cl_float4> motion;
     for (const Vec2& p : pointsOnCircles(layout, target))
@@ -216,10 +217,10 @@ void bareRk4KernelBenchmark(benchmark::State& state, std::int64_t target)
     cl::CommandQueue& queue = device->queue();
     const cl::Buffer points(device->context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR,
                             motion.size() * sizeof(cl_float4), motion.data());
-    const cl::Buffer status(device->context(), CL_MEM_READ_WRITE, 3 * sizeof(cl_uint));
-    queue.enqueueFillBuffer(status, cl_uint(0), 0, 3 * sizeof(cl_uint));
+    const cl::Buffer status(device->context(), CL_MEM_READ_WRITE, statusWords * sizeof(cl_uint));
+    queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
     // MOTION_ARGS of contours.cl: RK4 through the flow.
-    const cl_int motionFlow = 0, rewind = 1;
+    const cl_int rewind = 1;
     const cl_float2 noCentre{{0.0f, 0.0f}};
     const auto n = cl_uint(target);
 

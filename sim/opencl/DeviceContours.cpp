@@ -7,6 +7,7 @@
 #include "sim/ContourTracker.h"
 #include "sim/SpacingField.h"
 
+#include "sim/opencl/ContourCodes.h"
 #include "sim/opencl/KernelSources.h"
 #include "sim/opencl/Launch.h"
 #include "sim/opencl/Scan.h"
@@ -29,13 +30,6 @@ constexpr int maxRounds = 16;  // as ContourTracker::refine
 // rather than a grid so coarse that every bucket holds vertices from far apart.
 constexpr std::size_t minCapacity = std::size_t(1) << 14;
 
-// The status buffer (contours.cl).
-enum : std::size_t { statusSticky = 0, statusPass = 1, statusStrain = 2, statusWords = 3 };
-constexpr cl_uint flagNonFinite = 1, flagSplitMismatch = 2;  // sticky
-constexpr cl_uint flagsShortEdge = 7, flagRecentred = 8, flagSplitCapped = 16;  // per pass
-
-enum : cl_int { termsArea = 0, termsWinding = 1 };  // TERMS_* of contours_area.cl
-enum : cl_int { motionFlow = 0, motionDrop = 1 };   // MOTION_* of contours.cl
 
 // MOTION_ARGS of contours.cl: how vertices move in this step, and where split vertices go.
 struct Motion {
@@ -247,7 +241,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
     const std::string options =
         commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc + "2 -DVF_ACC4=" + acc + "4" +
         " -DVF_RECENTRE_CORRECTIONS=" + std::to_string(recentreCorrections) + " -DVF_FOLD_REACH=" + std::to_string(foldReach) +
-        " -DVF_TIP_WIDTH=" + std::to_string(tipWidth) + "f";
+        " -DVF_TIP_WIDTH=" + std::to_string(tipWidth) + "f" + contourCodeDefinitions();
     const std::string source = joinedKernelSources({"flow.h.cl"}) + flowSource + "\n" +
                                joinedKernelSources({"workgroup.cl", "contours.cl", "contours_spacing.cl",
                                                     "contours_refine.cl", "contours_area.cl"});

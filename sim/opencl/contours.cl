@@ -18,24 +18,19 @@ typedef VF_ACC4 acc4;
 #define CONTOUR_ARGS                                                                           \
     __global const uint *contourOf, __global const uint *contourOffset, __global const uint *contourCount
 
-// How vertices move in this step: through the flow from t0 to t1 (RK4), or by an ink drop's push.
-// `rewind` is TrackingSettings::timeRewinding: where a split vertex goes (eq. 2 or the chord).
-#define MOTION_FLOW 0
-#define MOTION_DROP 1
+// How vertices move in this step: through the flow from t0 to t1 (RK4, motionKind MOTION_FLOW), or
+// by an ink drop's push (MOTION_DROP). `rewind` is TrackingSettings::timeRewinding: where a split
+// vertex goes (eq. 2 or the chord). MOTION_*, STATUS_*, FLAG_* and TERMS_* are defined by the host
+// as build options (DeviceContours.cpp, sharedDefinitions).
 #define MOTION_ARGS int motionKind, float2 dropCentre, float dropRadius, int rewind
 #define MOTION_PASS motionKind, dropCentre, dropRadius, rewind
 
 // Words of the status buffer the host reads once per pass. Flags are raised with atomic_or, the
 // strain with atomic_max on the bits of a non-negative float: both results are independent of the
-// order in which work-items arrive.
-#define STATUS_STICKY 0  // flags kept over the whole step
-#define STATUS_PASS 1    // flags of the current refinement pass
-#define STATUS_STRAIN 2
-#define FLAG_NON_FINITE 1u
-#define FLAG_SPLIT_MISMATCH 2u
-#define FLAG_SHORT_EDGE(colour) (1u << (colour))  // a short edge touches a vertex of that colour
-#define FLAG_RECENTRED 8u
-#define FLAG_SPLIT_CAPPED 16u
+// order in which work-items arrive. STATUS_STICKY holds flags kept over the whole step
+// (FLAG_NON_FINITE, FLAG_SPLIT_MISMATCH), STATUS_PASS those of the current refinement pass
+// (FLAG_SHORT_EDGE, FLAG_RECENTRED, FLAG_SPLIT_CAPPED), STATUS_STRAIN the strain.
+#define FLAG_SHORT_EDGE(colour) (FLAG_SHORT_EDGE_0 << (colour))  // a short edge touches a vertex of that colour
 
 VF_DEFINE_LOCAL_SCAN(uint)
 VF_DEFINE_LOCAL_SCAN(float)

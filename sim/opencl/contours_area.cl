@@ -6,8 +6,8 @@
 // Two uses: the optional area correction (sim/AreaCorrection: v_i ← v_i + λ·g_i along the area
 // gradient g_i = ½·J·(v_{i+1} − v_{i−1}), λ in closed form), and the winding numbers that raise
 // the area targets of the contours an ink drop lands in.
-#define TERMS_AREA 0     // (2·area term, |g_i|², 2·area term of the gradient polygon, 0)
-#define TERMS_WINDING 1  // (winding contribution of the edge around `point`, 0, 0, 0)
+// The mode (host-defined codes): TERMS_AREA sums (2·area term, |g_i|², 2·area term of the gradient
+// polygon, 0), TERMS_WINDING (winding contribution of the edge around `point`, 0, 0, 0).
 
 VF_INLINE acc2 wide(float4 m)
 {
