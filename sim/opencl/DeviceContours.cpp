@@ -196,9 +196,15 @@ struct DeviceContours::Impl {
     std::size_t capacity = 0, vertices = 0;
     std::size_t paddedCapacity = 0;  // entries of each per-vertex array (see reserve())
     VertexSet front, back;
-    // back.motion holds, as float2, the flow's velocity at every vertex that the last strain check
-    // sampled, until anything moves, adds or replaces vertices or uses the scratch.
+    // back.motion is scratch. After a strain check it holds, as float2, the flow's velocity at every
+    // vertex, which the next advection reuses as RK4's first stage: valid until the scratch is
+    // taken for anything else (motionScratch()) or the vertices are replaced (place()).
     bool strainSamplesKept = false;
+    cl::Buffer& motionScratch()
+    {
+        strainSamplesKept = false;
+        return back.motion;
+    }
     cl::Buffer tileOffset;  // uint per vertex: offset within its tile, from the counting kernels
     cl::Buffer work;        // uint per vertex: grid bucket counts, then starts; collapse actions
     cl::Buffer tileTotals;  // one acc4 per tile: uint, acc_t or acc4 totals, as the pass needs
@@ -353,13 +359,14 @@ Grid DeviceContours::Impl::grid() const
 bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, bool startKnown)
 {
     startKnown = startKnown && strainSamplesKept && motion.kind == motionFlow;
-    strainSamplesKept = false;
+    // The samples are read one last time: the advection moves the vertices they belong to.
+    const cl::Buffer& startVelocity = motionScratch();
     if (vertices == 0)
         return true;
     {
         const PhaseClock::Scope timing(clock, Phase::Advect);
         queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
-        launch(queue, advect, laneGroups(vertices), flow, motion, front.motion, cl_uint(vertices), back.motion,
+        launch(queue, advect, laneGroups(vertices), flow, motion, front.motion, cl_uint(vertices), startVelocity,
                cl_int(startKnown), status);
     }
     computeSpacing(flow);
@@ -387,9 +394,9 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
     if (settings.proximity) {
         const PhaseClock::Scope timing(clock, Phase::Proximity);
         buildGrid(g);
-        launch(queue, nearestOtherPart, laneGroups(g.buckets()), radius, work, back.motion, cl_uint(g.buckets()),
+        launch(queue, nearestOtherPart, laneGroups(g.buckets()), radius, work, motionScratch(), cl_uint(g.buckets()),
                contourLength, back.contour);
-        launch(queue, nearestBeyond, laneGroups(g.buckets()), g, radius, work, back.motion, cl_uint(g.buckets()),
+        launch(queue, nearestBeyond, laneGroups(g.buckets()), g, radius, work, motionScratch(), cl_uint(g.buckets()),
                contourLength, back.contour);
     }
     const PhaseClock::Scope timing(clock, Phase::Spacing);
@@ -412,7 +419,7 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
     sumScan.exclusive(tileTotals, arcTiles + 1);
     countScan.exclusive(work, g.buckets() + 1);
     launch(queue, gridScatter, laneGroups(vertices), front.motion, front.contour, contourOffset, contourCount, n,
-           back.spacing, tileTotals, g, work, tileOffset, back.motion, contourLength);
+           back.spacing, tileTotals, g, work, tileOffset, motionScratch(), contourLength);
     // Each entry's squared distance to another part starts at the search radius squared (nothing
     // found) for nearestOtherPart's atomic_min: one fill, where gridScatter would write it to
     // scattered slots.
@@ -524,7 +531,7 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
     }
     clearMarks(tileMarksMoved);
     launch(queue, splitScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour,
-           contourOffset, contourCount, cl_uint(vertices), tileActive, tileOffset, tileTotals, back.motion,
+           contourOffset, contourCount, cl_uint(vertices), tileActive, tileOffset, tileTotals, motionScratch(),
            back.spacing, back.contour, tileMarksMoved, status);
     adopt(pass.total);
     return pass;
@@ -537,7 +544,7 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
 {
     bool changed = false;
     for (cl_uint colour = 0; colour < 3; ++colour) {
-        if (!(colours & (1u << colour)))
+        if (!(colours & (flagShortEdge0 << colour)))
             continue;
         clearPassFlags();
         clearMarks(tileMarks);
@@ -550,7 +557,7 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
             clearMarks(tileMarksMoved);
             launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing,
                    front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, work, tileOffset,
-                   tileTotals, back.motion, back.spacing, back.contour, tileMarksMoved);
+                   tileTotals, motionScratch(), back.spacing, back.contour, tileMarksMoved);
             adopt(pass.total);
         } else {
             if (pass.flags & flagRecentred)
@@ -577,7 +584,7 @@ void DeviceContours::Impl::correctAreas()
 {
     contourTerms(termsArea, Vec2(0.0), 0.0);
     launch(queue, correctArea, vertices, front.motion, front.contour, contourOffset, contourCount, cl_uint(vertices),
-           contourLambda, back.motion);
+           contourLambda, motionScratch());
     std::swap(front.motion, back.motion);
 }
 
@@ -612,9 +619,9 @@ void DeviceContours::Impl::enqueueOutlines(Outlines& s)
     if (contours == 0)
         return;
     if (vertices > 0) {
-        strainSamplesKept = false;
-        launch(queue, positionsOf, vertices, front.motion, cl_uint(vertices), back.motion);
-        queue.enqueueReadBuffer(back.motion, CL_FALSE, 0, vertices * sizeof(cl_float2), s.positions.data());
+        cl::Buffer& positions = motionScratch();
+        launch(queue, positionsOf, vertices, front.motion, cl_uint(vertices), positions);
+        queue.enqueueReadBuffer(positions, CL_FALSE, 0, vertices * sizeof(cl_float2), s.positions.data());
     }
     queue.enqueueReadBuffer(contourOffset, CL_FALSE, 0, contours * sizeof(cl_uint), s.offset.data());
     queue.enqueueReadBuffer(contourCount, CL_FALSE, 0, contours * sizeof(cl_uint), s.count.data(), nullptr, &s.done);
@@ -751,7 +758,7 @@ double DeviceContours::strainInSpacings(const FlowBinding& flow, double dt)
         cl::CommandQueue& q = m->queue;
         q.enqueueFillBuffer(m->status, cl_uint(0), statusStrain * sizeof(cl_uint), sizeof(cl_uint));
         launch(q, m->strain, laneGroups(m->vertices), flow, cl_float(dt), m->front.motion, m->front.spacing,
-               m->front.contour, m->contourOffset, m->contourCount, cl_uint(m->vertices), m->back.motion, m->status);
+               m->front.contour, m->contourOffset, m->contourCount, cl_uint(m->vertices), m->motionScratch(), m->status);
         m->strainSamplesKept = true;
         float worst = 0.0f;
         q.enqueueReadBuffer(m->status, CL_TRUE, statusStrain * sizeof(cl_uint), sizeof(float), &worst);
