@@ -181,7 +181,8 @@ namespace {
 bool sameRegions(RegionTable::const_iterator first, RegionTable::const_iterator last,
                  RegionTable::const_iterator other)
 {
-    return std::equal(first, last, other, [](const RegionLook& a, const RegionLook& b) { return a.simIndex == b.simIndex; });
+    return std::equal(first, last, other,
+                      [](const RegionLook& a, const RegionLook& b) { return a.simIndex == b.simIndex; });
 }
 
 // Where `after` holds the regions of `before` with one of them moved: its index before and after.
