@@ -209,6 +209,27 @@ VF_INLINE void copyLanes(CONST_VERTEX_SET(in), uint first, VERTEX_SET(out), uint
     vstore8(vload8(0, inContour + first), 0, outContour + at);
 }
 
+// The two counting passes (splitCount, collapseDecide) open and close alike. A group none of whose
+// tiles is looked at leaves at once; `first` is the work-item's first vertex, `active` whether its
+// tile is looked at, and the group's pass flags (groupFlags) start empty. At the end each lane's
+// count of vertices and its need of attention are scanned over the tiles, and the group's flags
+// join the pass's status word.
+#define VF_BEGIN_COUNTING_PASS                                   \
+    __local uint scratch[VF_SCAN_SCRATCH], itemBefore[VF_LOCAL]; \
+    __local uint groupFlags;                                     \
+    if (skippedGroup(tileActive, n, tileTotals, tiles))          \
+        return;                                                  \
+    const uint first = VF_LANES * get_global_id(0);              \
+    const bool active = inActiveTile(tileActive, n);             \
+    if (get_local_id(0) == 0)                                    \
+        groupFlags = 0;                                          \
+    barrier(CLK_LOCAL_MEM_FENCE)
+
+#define VF_END_COUNTING_PASS(counts, attention)                                                  \
+    scanTiles(scratch, itemBefore, counts, attention, active, n, tileOffset, tileTotals, tiles); \
+    if (get_local_id(0) == 0 && groupFlags)                                                      \
+        atomic_or(&status[STATUS_PASS], groupFlags)
+
 // Per vertex: 1 + the vertices its edge to the next one gets. Also flags short edges by the colours
 // of their ends, so the host can skip the collapse passes that would find nothing to do, and a
 // split stopped by the depth cap. A split edge or a short one needs attention (marks).
@@ -216,15 +237,7 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
                           __global const uint *contourCount, uint n, TILE_ARGS, __global uint *marks,
                           __global uint *tileOffset, __global uint *tileTotals, uint tiles, __global uint *status)
 {
-    __local uint scratch[VF_SCAN_SCRATCH], itemBefore[VF_LOCAL];
-    __local uint groupFlags;
-    if (skippedGroup(tileActive, n, tileTotals, tiles))
-        return;
-    const uint first = VF_LANES * get_global_id(0);
-    const bool active = inActiveTile(tileActive, n);
-    if (get_local_id(0) == 0)
-        groupFlags = 0;
-    barrier(CLK_LOCAL_MEM_FENCE);
+    VF_BEGIN_COUNTING_PASS;
     // A group of lanes on one contour, with a vertex either side of it there, whose edges are all
     // well inside (d/2, d) and where the contour nowhere turns back (no needle tip) is settled:
     // every vertex stays one to one, with no flag. The margin keeps the vector lengths from
@@ -271,9 +284,7 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
         if (attention[k])
             markTiles(marks, previousIn(i, from, count), i, j);
     }
-    scanTiles(scratch, itemBefore, produced, attention, active, n, tileOffset, tileTotals, tiles);
-    if (get_local_id(0) == 0 && groupFlags)
-        atomic_or(&status[STATUS_PASS], groupFlags);
+    VF_END_COUNTING_PASS(produced, attention);
 }
 
 // Whether any of the group's vertices (from `first`) needs attention: its tile is looked at and
@@ -446,15 +457,7 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *mot
                               __global uint *action, __global uint *tileOffset, __global uint *tileTotals, uint tiles,
                               __global uint *status)
 {
-    __local uint scratch[VF_SCAN_SCRATCH], itemBefore[VF_LOCAL];
-    __local uint groupFlags;
-    if (skippedGroup(tileActive, n, tileTotals, tiles))
-        return;
-    const uint first = VF_LANES * get_global_id(0);
-    const bool active = inActiveTile(tileActive, n);
-    if (get_local_id(0) == 0)
-        groupFlags = 0;
-    barrier(CLK_LOCAL_MEM_FENCE);
+    VF_BEGIN_COUNTING_PASS;
     uint kept[VF_LANES];
     bool attention[VF_LANES];
     for (int lane = 0; lane < VF_LANES; ++lane) {
@@ -488,9 +491,7 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *mot
         action[i] = act;
         kept[lane] = act != ACTION_DELETE;
     }
-    scanTiles(scratch, itemBefore, kept, attention, active, n, tileOffset, tileTotals, tiles);
-    if (get_local_id(0) == 0 && groupFlags)
-        atomic_or(&status[STATUS_PASS], groupFlags);
+    VF_END_COUNTING_PASS(kept, attention);
 }
 
 VF_INLINE void writeRecentred(FLOW_PARAMS, MOTION_ARGS, __global const float4 *inMotion,
