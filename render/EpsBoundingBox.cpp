@@ -2,6 +2,8 @@
 
 #include "model/AtomicFile.h"
 
+#include <algorithm>
+
 namespace vf::render {
 
 EpsBoundingBoxFilter::EpsBoundingBoxFilter(QIODevice& out, int width, int height)
@@ -21,6 +23,11 @@ QString EpsBoundingBoxFilter::finish()
     if (!m_line.isEmpty())
         forward(m_line.constData(), m_line.size());
     m_line.clear();
+    // Cairo spools the page to a temporary file of its own and reports no failure to write it
+    // there: the document then stops short of its trailer, or never starts.
+    if (m_error.isEmpty() && !m_tail.trimmed().endsWith("%%EOF"))
+        m_error = QStringLiteral("cairo could not write its PostScript spool (a full disk or a file size limit?): "
+                                 "the EPS is incomplete");
     return m_error;
 }
 
@@ -53,6 +60,8 @@ bool EpsBoundingBoxFilter::forward(const char* data, qint64 length)
 {
     if (m_error.isEmpty())
         m_error = model::writeAll(m_out, data, length);
+    m_tail = (m_tail + QByteArray(data + std::max<qint64>(0, length - tailLength), std::min<qint64>(length, tailLength)))
+                 .right(tailLength);
     return m_error.isEmpty();
 }
 

@@ -18,7 +18,8 @@ public:
     // A cairo_write_func_t; `closure` is the filter.
     static cairo_status_t write(void* closure, const unsigned char* data, unsigned int length);
 
-    // Passes on an unterminated last line, if any; returns an empty string or what went wrong.
+    // Passes on an unterminated last line, if any; returns an empty string or what went wrong,
+    // including a document that does not end with its %%EOF trailer.
     QString finish();
     // What went wrong writing so far, or an empty string.
     const QString& error() const { return m_error; }
@@ -33,6 +34,8 @@ private:
     QByteArray m_line;      // the header line being collected
     bool m_inHeader = true; // until %%EndPageSetup, after which nothing needs rewriting
     QString m_error;
+    static constexpr qint64 tailLength = 16;
+    QByteArray m_tail;  // the last bytes written: a complete document ends with %%EOF
 };
 
 } // namespace vf::render
