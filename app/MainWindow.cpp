@@ -1,25 +1,21 @@
 // The main window: its actions, docks and menus, and what each user action does to the document
-// (open, save, import, export, tools, modes). It is one file because every part reaches the same
-// document, canvas and simulation controller; the pieces with their own state already live apart
-// (Canvas, ExportDialog, RegionsDock, SimulationPanel, Recovery, ClipboardExport). A later split would move the
-// file actions (open, save, recovery) into a class of their own.
+// (import, export, tools, modes). Opening and saving are in MainWindowFiles.cpp; the pieces with
+// their own state live apart (Canvas, ExportDialog, RegionsDock, SimulationPanel, Recovery,
+// RecentFiles, ClipboardExport).
 #include "app/MainWindow.h"
 
 #include "app/ClipboardExport.h"
 #include "app/ExportDialog.h"
-#include "app/Folders.h"
+#include "app/RecentFiles.h"
 #include "app/Recovery.h"
 #include "app/SimulationPanel.h"
 #include "app/TextToolBar.h"
-#include "model/ProjectFile.h"
-#include "model/SceneFile.h"
 #include "model/SvgImport.h"
 #include "model/TextOutlines.h"
 #include "sim/opencl/DeviceList.h"
 
 #include <QActionGroup>
 #include <QApplication>
-#include <QCloseEvent>
 #include <QColorDialog>
 #include <QDir>
 #include <QDockWidget>
@@ -39,27 +35,11 @@ namespace vf::app {
 
 namespace {
 
-constexpr int maxRecentFiles = 8;
-const QString recentKey = QStringLiteral("files/recent");
-const QString saveFolderKey = QStringLiteral("files/saveFolder");  // where Save As saved last
-// The backend and device last chosen, for new documents.
-const QString backendKey = QStringLiteral("simulation/backend");
-const QString deviceKey = QStringLiteral("simulation/device");
 const QString historyBudgetKey = QStringLiteral("history/budgetMB");
 
 sim::Vec2 toVec(QPointF p)
 {
     return {p.x(), p.y()};
-}
-
-// A blank marbling tray: what File ▸ New opens.
-model::Scene blankScene()
-{
-    model::Scene scene;
-    scene.canvas.background = QColor(0xf4, 0xee, 0xe2);
-    model::applyPreset(scene.flow, model::FluidMode::Marbling);
-    scene.time.dt = 0.005;
-    return scene;
 }
 
 } // namespace
@@ -103,14 +83,25 @@ MainWindow::~MainWindow()
 
 void MainWindow::createActions()
 {
+    createFileMenu();
+    createEditMenu();
+    createTools();
+    createSimulationMenu();
+    createViewMenu();
+}
+
+void MainWindow::createFileMenu()
+{
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&New"), QKeySequence::New, this, [this] {
         if (maybeSave())
             newDocument();
     });
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
-    m_recentMenu = file->addMenu(tr("Open &Recent"));
-    updateRecentMenu();
+    m_recentFiles = new RecentFiles(file->addMenu(tr("Open &Recent")), [this](const QString& path) {
+        if (maybeSave())
+            openFile(path);
+    }, this);
     file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(SaveMode::Background); });
     // Ctrl+Shift+S on every platform: some (the offscreen one, say) bind no key to SaveAs.
     file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this, [this] { saveAs(SaveMode::Background); });
@@ -120,7 +111,10 @@ void MainWindow::createActions()
     file->addAction(tr("&Copy as SVG"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), this, &MainWindow::copySvg);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+}
 
+void MainWindow::createEditMenu()
+{
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = m_document.undoStack().createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
@@ -153,7 +147,12 @@ void MainWindow::createActions()
         if (ok)
             m_recovery->setInterval(seconds);
     });
+}
 
+// The tool bar and the Tools menu (one action per tool, each with its key), the ink colour, and
+// the Text tool's options bar.
+void MainWindow::createTools()
+{
     QToolBar* tools = addToolBar(tr("Tools"));
     tools->setObjectName(QStringLiteral("tools"));
     auto* toolGroup = new QActionGroup(this);
@@ -201,7 +200,11 @@ void MainWindow::createActions()
     m_textOptions->setVisible(false);
     connect(m_textOptions, &TextToolBar::changed, this, &MainWindow::previewText);
     connect(findChild<QAction*>(QStringLiteral("toolText")), &QAction::toggled, m_textOptions, &QWidget::setVisible);
+}
 
+// The Simulation menu and the Playback tool bar: play, step, reset, and the two modes.
+void MainWindow::createSimulationMenu()
+{
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     QToolBar* playback = addToolBar(tr("Playback"));
     playback->setObjectName(QStringLiteral("playback"));
@@ -236,7 +239,10 @@ void MainWindow::createActions()
             m_document.setSettings(s);
         });
     }
+}
 
+void MainWindow::createViewMenu()
+{
     QMenu* view = menuBar()->addMenu(tr("&View"));
     // The canvas's own zoom actions, their shortcuts made window-wide now that a menu shows them.
     for (QAction* zoom : m_canvas->actions()) {
@@ -331,8 +337,7 @@ void MainWindow::connectDocument()
     connect(&m_document, &model::Document::settingsChanged, this, [this](const model::EngineSettings& s) {
         m_panel->setSettings(s);
         m_canvas->setStylusRadius(s.flow.stylusRadius);
-        QSettings().setValue(backendKey, s.backend);
-        QSettings().setValue(deviceKey, s.device);
+        rememberBackend(s);
         m_marblingAction->setChecked(model::isPreset(s.flow, model::FluidMode::Marbling));
         m_shapeDesignAction->setChecked(model::isPreset(s.flow, model::FluidMode::ShapeDesign));
     });
@@ -383,220 +388,11 @@ model::Drawing MainWindow::drawing() const
     return model::drawingOf(m_document.scene().canvas, m_document.regions(), frame ? frame->regions : nothingYet);
 }
 
-// ---- Files --------------------------------------------------------------------------------------------
-
-void MainWindow::newDocument()
-{
-    ++m_opened;
-    m_sceneName.clear();
-    const QSettings settings;
-    m_document.openScene(blankScene(), settings.value(backendKey, QStringLiteral("opencl")).toString(),
-                         settings.value(deviceKey, -1).toInt());
-    m_canvas->setBackground(m_document.scene().canvas.background);
-    m_canvas->fitToWindow();
-    updateTitle();
-}
-
-bool MainWindow::load(const QString& path)
-{
-    ++m_opened;
-    if (path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive)) {
-        const model::ProjectReadResult read = model::readProjectFile(path);
-        if (!read.ok()) {
-            m_report(tr("Cannot open project"), read.error);
-            return false;
-        }
-        m_document.openProject(read.project, m_document.settings().backend, m_document.settings().device);
-        m_sceneName.clear();
-        m_document.setFilePath(path);
-    } else {
-        const model::SceneReadResult read = model::readSceneFile(path);
-        if (!read.ok()) {
-            m_report(tr("Cannot open scene"), read.error);
-            return false;
-        }
-        // A scene is a starting point, not the document's file: Save asks where to put the project.
-        m_document.openScene(read.scene, m_document.settings().backend, m_document.settings().device);
-        m_sceneName = QFileInfo(path).completeBaseName();
-    }
-    m_canvas->setBackground(m_document.scene().canvas.background);
-    m_canvas->fitToWindow();
-    updateTitle();
-    return true;
-}
-
-bool MainWindow::openFile(const QString& path)
-{
-    if (!load(path))
-        return false;
-    addRecent(path);
-    return true;
-}
-
-bool MainWindow::recover()
-{
-    if (!load(m_recovery->filePath()))
-        return false;
-    // Recovered work has no file of its own yet, and is unsaved until the user saves it.
-    m_document.setFilePath({});
-    m_document.undoStack().resetClean();
-    updateTitle();
-    return true;
-}
-
-bool MainWindow::saveTo(const QString& path)
-{
-    m_saves.waitForDone();  // an earlier save of an older draft must not land after this one
-    const std::uint64_t revision = m_document.revision();
-    return saved(path, m_opened, revision, model::writeProjectFile(m_document.draftProject().finish(), path));
-}
-
-void MainWindow::saveInBackground(const QString& path)
-{
-    // The draft is the document now; waiting for its states and writing them run on a pool
-    // thread, so the window stays live while a long history is written.
-    // One thread for saves, so that they land in the order they were made.
-    m_saves.start([this, draft = m_document.draftProject(), path, opened = m_opened, revision = m_document.revision()] {
-        const QString error = model::writeProjectFile(draft.finish(), path);
-        QMetaObject::invokeMethod(this, [=, this] { saved(path, opened, revision, error); }, Qt::QueuedConnection);
-    });
-    statusBar()->showMessage(tr("Saving %1…").arg(QFileInfo(path).fileName()));
-}
-
-bool MainWindow::saved(const QString& path, int opened, std::uint64_t revision, const QString& error)
-{
-    if (!error.isEmpty()) {
-        m_report(tr("Cannot save"), error);
-        return false;
-    }
-    addRecent(path);
-    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 3000);
-    if (opened != m_opened)  // another document was opened while this one was written
-        return true;
-    m_document.setFilePath(path);
-    // Clean only if the history has not moved on while it was written.
-    if (m_document.revision() == revision) {
-        m_document.undoStack().setClean();
-        m_recovery->discard();
-    }
-    return true;
-}
-
-bool MainWindow::save(SaveMode mode)
-{
-    if (m_document.filePath().isEmpty())
-        return saveAs(mode);
-    if (mode == SaveMode::Wait)
-        return saveTo(m_document.filePath());
-    saveInBackground(m_document.filePath());
-    return true;
-}
-
-bool MainWindow::saveAs(SaveMode mode)
-{
-    QString path = QFileDialog::getSaveFileName(this, tr("Save project"), suggestedProjectPath(),
-                                                tr("Vector Fluid projects (*.vfproj)"));
-    if (path.isEmpty())
-        return false;
-    if (!path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive))
-        path += QLatin1String(".vfproj");
-    QSettings().setValue(saveFolderKey, QFileInfo(path).absolutePath());
-    if (mode == SaveMode::Wait)
-        return saveTo(path);
-    saveInBackground(path);
-    return true;
-}
-
-void MainWindow::open()
-{
-    if (!maybeSave())
-        return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open"), recentDirectory(),
-                                                      tr("Projects and scenes (*.vfproj *.vfscene);;All files (*)"));
-    if (!path.isEmpty())
-        openFile(path);
-}
-
-bool MainWindow::maybeSave()
-{
-    if (!m_document.isModified())
-        return true;
-    switch (m_ask(tr("Unsaved changes"), tr("Save the changes to this document first?"),
-                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel)) {
-    case QMessageBox::Save:
-        return save(SaveMode::Wait);  // what comes next (closing, opening) needs it done
-    case QMessageBox::Discard:
-        return true;
-    default:
-        return false;
-    }
-}
-
-void MainWindow::closeEvent(QCloseEvent* event)
-{
-    if (!maybeSave()) {
-        event->ignore();
-        return;
-    }
-    m_recovery->discard();
-    event->accept();
-}
-
-void MainWindow::addRecent(const QString& path)
-{
-    QSettings settings;
-    QStringList recent = settings.value(recentKey).toStringList();
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    recent.removeAll(absolute);
-    recent.prepend(absolute);
-    settings.setValue(recentKey, recent.mid(0, maxRecentFiles));
-    updateRecentMenu();
-}
-
-void MainWindow::updateRecentMenu()
-{
-    m_recentMenu->clear();
-    const QStringList recent = QSettings().value(recentKey).toStringList();
-    for (const QString& path : recent)
-        m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
-            if (maybeSave())
-                openFile(path);
-        })->setToolTip(path);
-    m_recentMenu->setEnabled(!recent.isEmpty());
-}
-
-// The project's own path once it has one; else the scene's name (or Untitled) in the folder of
-// the last project saved, or in the documents folder.
-QString MainWindow::suggestedProjectPath() const
-{
-    if (!m_document.filePath().isEmpty())
-        return m_document.filePath();
-    QString folder = QSettings().value(saveFolderKey).toString();
-    if (folder.isEmpty() || !QFileInfo(folder).isDir())
-        folder = documentsFolder();
-    const QString name = m_sceneName.isEmpty() ? tr("Untitled") : m_sceneName;
-    return QDir(folder).filePath(name + QStringLiteral(".vfproj"));
-}
-
-QString MainWindow::recentDirectory() const
-{
-    const QStringList recent = QSettings().value(recentKey).toStringList();
-    return recent.isEmpty() ? QString() : QFileInfo(recent.front()).absolutePath();
-}
-
-void MainWindow::updateTitle()
-{
-    const QString file = m_document.filePath();
-    const QString name = !file.isEmpty() ? QFileInfo(file).fileName() : !m_sceneName.isEmpty() ? m_sceneName : tr("Untitled");
-    setWindowTitle(QStringLiteral("%1[*] — Vector Fluid").arg(name));
-    setWindowModified(m_document.isModified());
-}
-
 // ---- Import and export --------------------------------------------------------------------------------
 
 void MainWindow::chooseImport()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import SVG"), recentDirectory(), tr("SVG files (*.svg)"));
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import SVG"), m_recentFiles->folder(), tr("SVG files (*.svg)"));
     if (!path.isEmpty())
         importSvg(path);
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The desktop app's main window: the canvas, the tool bar, the Regions / History / Simulation
-// docks, the menus and the status bar, over one Document and its simulation worker.
+// docks, the menus and the status bar, over one Document and its simulation worker
+// (MainWindow.cpp; its file actions in MainWindowFiles.cpp).
 #include "app/Canvas.h"
 #include "app/RegionsDock.h"
 #include "app/SimulationController.h"
@@ -19,6 +20,7 @@
 
 namespace vf::app {
 
+class RecentFiles;
 class Recovery;
 class SimulationPanel;
 class TextToolBar;
@@ -67,7 +69,13 @@ protected:
 
 private:
     bool load(const QString& path);
+    void rememberBackend(const model::EngineSettings& settings);  // for the next new document
     void createActions();
+    void createFileMenu();
+    void createEditMenu();
+    void createTools();
+    void createSimulationMenu();
+    void createViewMenu();
     void createDocks();
     void createStatusBar();
     void connectDocument();
@@ -84,12 +92,9 @@ private:
     void chooseImport();
     std::vector<sim::Polygon> textOutlines(const QString& text, QPointF baselineStart) const;
     void previewText();
-    void addRecent(const QString& path);
-    void updateRecentMenu();
     void updateTitle();
     QString suggestedProjectPath() const;
     void showFrame();
-    QString recentDirectory() const;
 
     SimulationController m_simulation;
     model::Document m_document;
@@ -100,7 +105,7 @@ private:
     SimulationPanel* m_panel = nullptr;
     TextToolBar* m_textOptions = nullptr;
     Recovery* m_recovery = nullptr;
-    QMenu* m_recentMenu = nullptr;
+    RecentFiles* m_recentFiles = nullptr;
     QAction* m_playAction = nullptr;
     QAction* m_marblingAction = nullptr;
     QAction* m_shapeDesignAction = nullptr;
