@@ -103,6 +103,28 @@ QString checkOutputs(const RenderOptions& options, qint64 steps)
     return {};
 }
 
+// No output may replace an SVG file the scene starts from: `render logo.vfscene` alone writes
+// logo.svg beside it, which may be the very logo it imports.
+QString checkInputsKept(const model::Scene& scene, const RenderOptions& options)
+{
+    const QDir sceneFolder = QFileInfo(options.scene).absoluteDir();
+    QStringList files = options.outputs;
+    if (!options.statsFile.isEmpty())
+        files << options.statsFile;
+    for (std::size_t i = 0; i < scene.regions.size(); ++i) {
+        const auto* svg = std::get_if<model::SvgShape>(&scene.regions[i].shape);
+        if (!svg)
+            continue;
+        const QString input = QFileInfo(sceneFolder.filePath(svg->file)).canonicalFilePath();
+        for (const QString& file : files) {
+            if (!input.isEmpty() && QFileInfo(file).canonicalFilePath() == input)
+                return QStringLiteral("%1: would overwrite the SVG file of regions[%2].shape.svg; write elsewhere with --out")
+                    .arg(file).arg(i);
+        }
+    }
+    return {};
+}
+
 // --check-topology: contours must stay simple, and two contours that were apart when the later of
 // them appeared must stay apart. Regions may start overlapping (a scene may stack shapes): their
 // contours then cross from the start, which the flow keeps and the check accepts.
@@ -172,6 +194,10 @@ int renderCommand(const QStringList& arguments)
     const double dt = options->dt.value_or(read.scene.time.dt);
     if (const QString error = checkMemory(read.scene, *options, availableMemory()); !error.isEmpty()) {
         printError(QStringLiteral("%1: %2").arg(options->scene, error));
+        return BadInput;
+    }
+    if (const QString error = checkInputsKept(read.scene, *options); !error.isEmpty()) {
+        printError(error);
         return BadInput;
     }
     if (const QString error = checkOutputs(*options, steps); !error.isEmpty()) {

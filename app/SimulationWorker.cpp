@@ -79,7 +79,8 @@ void SimulationWorker::load(const model::Scene& scene, const model::EngineSettin
         reference.backend = QStringLiteral("reference");
         build(reference, nullptr);
         for (const model::RegionSpec& r : scene.regions)
-            m_simulation->addRegion(model::shapeContours(r.shape, settings.tracking.maxSpacing));
+            for (const model::StartingRegion& start : model::startingRegions(r, settings.tracking.maxSpacing))
+                m_simulation->addRegion(start.contours);
         m_script->applyDrops(*m_simulation, -INFINITY, 0.0);
         if (settings.backend != reference.backend) {
             const sim::SimulationState picture = m_simulation->snapshot();

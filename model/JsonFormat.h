@@ -52,6 +52,7 @@ public:
 
     bool exists() const { return !m_value.isUndefined(); }
     bool isNull() const { return m_value.isNull(); }
+    bool isObject() const { return m_value.isObject(); }
     const KeyPath& path() const { return m_path; }
     [[noreturn]] void fail(const QString& what) const { m_path.fail(what); }
 

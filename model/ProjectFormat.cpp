@@ -83,7 +83,7 @@ QString checkProject(const Project& project)
     const KeyPath top;
     try {
         // The scene goes through its own reader, so a scene that would not read back is refused.
-        readSceneObject(json::Field(sceneToJsonObject(project.scene), top.key(u"scene"_s)));
+        readSceneObject(json::Field(sceneToJsonObject(project.scene, SvgShapes::Embedded), top.key(u"scene"_s)), {});
         checkState(project.state, top.key(u"state"_s));
         std::unordered_set<const sim::SimulationState*> checked;
         for (std::size_t i = 0; i < project.history.size(); ++i) {

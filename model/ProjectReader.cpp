@@ -80,7 +80,7 @@ const Key<BlobRef> blobKeys[] = {
 };
 
 const Key<Manifest> manifestKeys[] = {
-    {u"scene"_s, true, [](const Field& f, Manifest& m) { m.project.scene = readSceneObject(f); }},
+    {u"scene"_s, true, [](const Field& f, Manifest& m) { m.project.scene = readSceneObject(f, {}); }},
     {u"regions"_s, true, [](const Field& f, Manifest& m) { m.project.regions = regionTable(f); }},
     {u"steps"_s, true, [](const Field& f, Manifest& m) { m.project.steps = jsonInteger(f); }},
     {u"state"_s, true, [](const Field& f, Manifest& m) { m.state = jsonInteger(f); }},

@@ -106,7 +106,7 @@ EncodedProject encodeProject(const Project& project)
     if (!encoded.error.isEmpty())
         return encoded;
 
-    const QJsonObject manifest{{u"scene"_s, sceneToJsonObject(project.scene)},
+    const QJsonObject manifest{{u"scene"_s, sceneToJsonObject(project.scene, SvgShapes::Embedded)},
                                {u"regions"_s, tableJson(project.regions)},
                                {u"steps"_s, qint64(project.steps)},
                                {u"state"_s, *currentIndex},

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 namespace vf::model {
@@ -78,6 +79,32 @@ sim::Polygon contour(const PolygonShape& shape, double maxSpacing)
     return polygon;
 }
 
+// The contours as Import SVG gave them; a finer spacing than the import's (the app's tracking
+// settings changed since) splits their edges further.
+std::vector<sim::Polygon> partContours(const SvgShape& svg, const ImportedShape& part, double maxSpacing)
+{
+    if (maxSpacing >= svg.spacing)
+        return part.contours;
+    std::vector<sim::Polygon> contours;
+    for (const sim::Polygon& c : part.contours)
+        contours.push_back(sim::resample(c, maxSpacing));
+    return contours;
+}
+
+template <typename S>
+std::vector<sim::Polygon> contours(const S& shape, double maxSpacing)
+{
+    return {contour(shape, maxSpacing)};
+}
+
+std::vector<sim::Polygon> contours(const SvgShape& svg, double maxSpacing)
+{
+    std::vector<sim::Polygon> all;
+    for (const ImportedShape& part : svg.shapes)
+        std::ranges::move(partContours(svg, part, maxSpacing), std::back_inserter(all));
+    return all;
+}
+
 // Upper bounds on the perimeter and on the vertices kept from the input.
 double perimeterBound(const CircleShape& c) { return 2.0 * std::numbers::pi * c.radius; }
 double perimeterBound(const EllipseShape& e) { return 2.0 * std::numbers::pi * std::max(e.radii.x, e.radii.y); }
@@ -88,11 +115,23 @@ double cornerCount(const EllipseShape&) { return 0.0; }
 double cornerCount(const RectShape&) { return 4.0; }
 double cornerCount(const PolygonShape& p) { return static_cast<double>(p.points.size()); }
 
+template <typename F>
+double sumOverContours(const SvgShape& svg, F f)
+{
+    double sum = 0.0;
+    for (const ImportedShape& part : svg.shapes)
+        for (const sim::Polygon& c : part.contours)
+            sum += f(c);
+    return sum;
+}
+double perimeterBound(const SvgShape& s) { return sumOverContours(s, sim::perimeter); }
+double cornerCount(const SvgShape& s) { return sumOverContours(s, [](const sim::Polygon& c) { return double(c.size()); }); }
+
 } // namespace
 
 std::vector<sim::Polygon> shapeContours(const Shape& shape, double maxSpacing)
 {
-    return {std::visit([maxSpacing](const auto& s) { return contour(s, maxSpacing); }, shape)};
+    return std::visit([maxSpacing](const auto& s) { return contours(s, maxSpacing); }, shape);
 }
 
 double shapeVertexBound(const Shape& shape, double maxSpacing)
@@ -101,6 +140,29 @@ double shapeVertexBound(const Shape& shape, double maxSpacing)
     // least kMinVertices and at most one extra vertex from rounding up.
     return std::visit([maxSpacing](const auto& s) { return perimeterBound(s) / maxSpacing + cornerCount(s); }, shape)
            + kMinVertices + 1.0;
+}
+
+std::vector<StartingRegion> startingLooks(const RegionSpec& region)
+{
+    const auto* svg = std::get_if<SvgShape>(&region.shape);
+    if (!svg)
+        return {{region.name, region.color, region.visible, {}}};
+    std::vector<StartingRegion> looks;
+    for (const ImportedShape& part : svg->shapes)
+        looks.push_back({region.name + u'/' + part.name, region.color.isValid() ? region.color : part.color, region.visible, {}});
+    return looks;
+}
+
+std::vector<StartingRegion> startingRegions(const RegionSpec& region, double maxSpacing)
+{
+    std::vector<StartingRegion> regions = startingLooks(region);
+    if (const auto* svg = std::get_if<SvgShape>(&region.shape)) {
+        for (std::size_t i = 0; i < regions.size(); ++i)
+            regions[i].contours = partContours(*svg, svg->shapes[i], maxSpacing);
+    } else {
+        regions.front().contours = shapeContours(region.shape, maxSpacing);
+    }
+    return regions;
 }
 
 } // namespace vf::model

@@ -1,8 +1,10 @@
 #pragma once
 // The scene file (*.vfscene) as data: what docs/scene-format.md describes, already validated.
 // SceneReader fills it from JSON, SceneWriter writes it back, SceneRunner plays it.
+#include "model/SvgImport.h"
 #include "sim/Geometry.h"
 
+#include <QByteArray>
 #include <QColor>
 #include <QString>
 
@@ -75,10 +77,21 @@ struct PolygonShape {
     sim::Polygon points;
     friend bool operator==(const PolygonShape&, const PolygonShape&) = default;
 };
-using Shape = std::variant<CircleShape, EllipseShape, RectShape, PolygonShape>;
+// The filled shapes of an SVG file, imported as File > Import SVG does (model/SvgImport.h): the
+// drawing fitted to the canvas, curves flattened at tracking.max_spacing. The reader fills every
+// field; equal file and text import to equal shapes on the same canvas and spacing.
+struct SvgShape {
+    QString file;     // as the scene gives it: relative to the scene file's folder, or absolute
+    QByteArray text;  // the SVG document (a project carries it, so that it opens without the file)
+    std::vector<ImportedShape> shapes;  // bottom to top, at least one
+    double spacing = 0.0;               // the tracking.max_spacing they were imported at
+    friend bool operator==(const SvgShape& a, const SvgShape& b) { return a.file == b.file && a.text == b.text; }
+};
+using Shape = std::variant<CircleShape, EllipseShape, RectShape, PolygonShape, SvgShape>;
 
 // The closed contours of a shape, edges no longer than maxSpacing, each with positive
 // sim::signedArea like every contour the engine creates (clockwise as seen on screen, y down).
+// An SVG shape gives the contours of all its shapes; startingRegions keeps them apart.
 std::vector<sim::Polygon> shapeContours(const Shape& shape, double maxSpacing);
 // An upper bound on the vertices shapeContours(shape, maxSpacing) creates, computed without
 // creating them; a double so that absurd inputs cannot overflow. The reader uses it to refuse
@@ -87,12 +100,24 @@ double shapeVertexBound(const Shape& shape, double maxSpacing);
 
 struct RegionSpec {
     QString name;
-    QColor color;
+    QColor color;  // invalid: an SVG shape's own colours
     bool visible = true;
     Shape shape;
 
     friend bool operator==(const RegionSpec&, const RegionSpec&) = default;
 };
+
+// What a scene region starts as in the simulation: itself, or for an SVG shape one region per
+// shape of the file, named "<region name>/<shape name>" and in the region's colour if it has one,
+// else the file's (docs/scene-format.md, "Shapes from SVG files").
+struct StartingRegion {
+    QString name;
+    QColor color;
+    bool visible = true;
+    std::vector<sim::Polygon> contours;  // empty from startingLooks
+};
+std::vector<StartingRegion> startingLooks(const RegionSpec& region);
+std::vector<StartingRegion> startingRegions(const RegionSpec& region, double maxSpacing);
 
 struct StylusStroke {
     double radius = 0.03;

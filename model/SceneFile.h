@@ -14,8 +14,10 @@ struct SceneReadResult {
     bool ok() const { return error.isEmpty(); }
 };
 
+// SVG shapes are read relative to the scene file's folder.
 SceneReadResult readSceneFile(const QString& path);
-SceneReadResult parseScene(const QByteArray& json, const QString& sourceName);
+// SVG shapes are read relative to `folder`; without one they must carry their contents.
+SceneReadResult parseScene(const QByteArray& json, const QString& sourceName, const QString& folder = {});
 
 QByteArray sceneToJson(const Scene& scene);
 // Atomic (QSaveFile): the previous file survives any failure. Returns an error line or empty.

@@ -7,7 +7,9 @@
 #include "sim/AnalyticFlow.h"
 #include "sim/Crossings.h"
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QHash>
 #include <QJsonDocument>
 
@@ -168,12 +170,32 @@ PolygonShape readPolygon(const Field& field)
     return polygon;
 }
 
+// The file's shapes are imported once the whole scene is read (importSvgShapes): they depend on the
+// canvas and the spacing. A project writes the object form, which carries the file's contents.
+const Key<SvgShape> svgKeys[] = {
+    {u"file"_s, true, [](const Field& f, SvgShape& svg) { svg.file = f.name(); }},
+    {u"base64"_s, true, [](const Field& f, SvgShape& svg) {
+         const auto decoded = QByteArray::fromBase64Encoding(f.string().toLatin1(), QByteArray::AbortOnBase64DecodingErrors);
+         if (!decoded || decoded.decoded.isEmpty())
+             f.fail(u"must be the SVG document in base64"_s);
+         svg.text = *decoded;
+     }},
+};
+
+SvgShape readSvg(const Field& field)
+{
+    if (field.isObject())
+        return readAs(field, svgKeys);
+    return SvgShape{field.name(), {}, {}};
+}
+
 // Each key is a kind of shape; the object must hold exactly one of them.
 const Key<Shape> shapeKeys[] = {
     {u"circle"_s, false, [](const Field& f, Shape& s) { s = readAs(f, circleKeys); }},
     {u"ellipse"_s, false, [](const Field& f, Shape& s) { s = readAs(f, ellipseKeys); }},
     {u"rect"_s, false, [](const Field& f, Shape& s) { s = readAs(f, rectKeys); }},
     {u"polygon"_s, false, [](const Field& f, Shape& s) { s = readPolygon(f); }},
+    {u"svg"_s, false, [](const Field& f, Shape& s) { s = readSvg(f); }},
 };
 
 void readShape(const Field& field, RegionSpec& region)
@@ -186,10 +208,19 @@ void readShape(const Field& field, RegionSpec& region)
 
 const Key<RegionSpec> regionKeys[] = {
     {u"name"_s, true, [](const Field& f, RegionSpec& r) { r.name = f.name(); }},
-    {u"color"_s, true, [](const Field& f, RegionSpec& r) { r.color = color(f); }},
+    {u"color"_s, false, [](const Field& f, RegionSpec& r) { r.color = color(f); }},
     {u"visible"_s, false, [](const Field& f, RegionSpec& r) { r.visible = f.boolean(); }},
     {u"shape"_s, true, readShape},
 };
+
+// Only an SVG shape may leave its colours to the file.
+RegionSpec readRegion(const Field& field)
+{
+    RegionSpec region = readAs(field, regionKeys);
+    if (!region.color.isValid() && !std::holds_alternative<SvgShape>(region.shape))
+        field.member(u"color"_s).fail(u"missing (required unless the shape is an SVG file)"_s);
+    return region;
+}
 
 // ---- strokes ----------------------------------------------------------------------------------
 
@@ -252,7 +283,7 @@ const Key<Scene> sceneKeys[] = {
     {u"tracking"_s, false, [](const Field& f, Scene& s) { s.tracking = readTrackingObject(f); }},
     {u"regions"_s, false, [](const Field& f, Scene& s) {
          s.regions = readList<RegionSpec>(f, 0, static_cast<qsizetype>(limits::maxRegions),
-                                          [](const Field& item) { return readAs(item, regionKeys); });
+                                          readRegion);
      }},
     {u"strokes"_s, false, [](const Field& f, Scene& s) {
          s.strokes = readList<Stroke>(f, 0, static_cast<qsizetype>(limits::maxStrokes), readStroke);
@@ -287,10 +318,51 @@ void checkNamesUnique(const Scene& scene, const KeyPath& root)
         owners.insert(name, u"%1[%2]"_s.arg(list).arg(i));
     };
     for (std::size_t i = 0; i < scene.regions.size(); ++i)
-        claim(scene.regions[i].name, u"regions"_s, i);
+        for (const StartingRegion& look : startingLooks(scene.regions[i]))
+            claim(look.name, u"regions"_s, i);
     for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
         if (const auto* drop = std::get_if<DropStroke>(&scene.strokes[i]))
             claim(drop->name, u"strokes"_s, i);
+    }
+}
+
+// Imports the SVG files of the regions' shapes as File > Import SVG does, with the canvas and
+// spacing just read; the importer's one-line error goes out under the shape's key path. Files are
+// found relative to `folder`; without one (a project) every SVG shape must carry its contents.
+void importSvgShapes(Scene& scene, const KeyPath& root, const QString& folder)
+{
+    std::size_t regionCount = 0;
+    for (std::size_t i = 0; i < scene.regions.size(); ++i) {
+        auto* svg = std::get_if<SvgShape>(&scene.regions[i].shape);
+        if (!svg) {
+            ++regionCount;
+            continue;
+        }
+        const KeyPath path = itemPath(root, u"regions"_s, i).key(u"shape"_s).key(u"svg"_s);
+        SvgImport imported;
+        if (!svg->text.isEmpty()) {
+            imported = importSvg(svg->text, QFileInfo(svg->file).fileName(), scene.canvas.width, scene.canvas.height,
+                                 scene.tracking.maxSpacing);
+        } else {
+            if (folder.isEmpty())
+                path.fail(u"the SVG's contents are missing: here it must be {\"file\": …, \"base64\": …}"_s);
+            const QString file = QDir(folder).filePath(svg->file);
+            imported = importSvgFile(file, scene.canvas.width, scene.canvas.height, scene.tracking.maxSpacing);
+            if (imported.ok()) {
+                // Kept for a project, which carries it. The importer has checked the file's size.
+                QFile contents(file);
+                if (!contents.open(QIODevice::ReadOnly))
+                    path.fail(u"%1: %2"_s.arg(svg->file, contents.errorString()));
+                svg->text = contents.readAll();
+            }
+        }
+        if (!imported.ok())
+            path.fail(imported.error);
+        svg->shapes = std::move(imported.shapes);
+        svg->spacing = scene.tracking.maxSpacing;
+        regionCount += svg->shapes.size();
+        if (regionCount > limits::maxRegions)
+            path.fail(u"its shapes take the starting regions to %1, over the limit of %2"_s.arg(regionCount).arg(limits::maxRegions));
     }
 }
 
@@ -338,26 +410,27 @@ QJsonDocument parseJson(const QByteArray& json)
 
 } // namespace
 
-Scene readSceneObject(const Field& root)
+Scene readSceneObject(const Field& root, const QString& folder)
 {
     Scene scene;
     // The version first: a newer file should say so rather than complain about its new keys.
     readVersion(root.member(u"vectorfluid"_s), scene);
     readObject(root, scene, std::span<const Key<Scene>>(sceneKeys));
+    importSvgShapes(scene, root.path(), folder);
     checkStrokesFitFlow(scene, root.path());
     checkNamesUnique(scene, root.path());
     checkVertexBudget(scene, root.path());
     return scene;
 }
 
-SceneReadResult parseScene(const QByteArray& json, const QString& sourceName)
+SceneReadResult parseScene(const QByteArray& json, const QString& sourceName, const QString& folder)
 {
     SceneReadResult result;
     try {
         const QJsonDocument document = parseJson(json);
         if (!document.isObject())
             throw ReadError{u"top level"_s, u"must be a JSON object {…}, not an array"_s};
-        result.scene = readSceneObject(Field(document.object(), KeyPath()));
+        result.scene = readSceneObject(Field(document.object(), KeyPath()), folder);
     } catch (const ReadError& error) {
         result.scene = Scene();
         result.error = oneLine(u"%1: %2: %3"_s.arg(sourceName, error.where, error.what));
@@ -373,7 +446,7 @@ SceneReadResult readSceneFile(const QString& path)
     const QByteArray json = file.readAll();
     if (file.error() != QFileDevice::NoError)
         return {Scene(), oneLine(u"%1: cannot read: %2"_s.arg(path, file.errorString()))};
-    return parseScene(json, path);
+    return parseScene(json, path, QFileInfo(path).absolutePath());
 }
 
 } // namespace vf::model

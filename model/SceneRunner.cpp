@@ -32,7 +32,8 @@ SceneRunner::SceneRunner(Scene scene, const SimulationFactory& factory)
     , m_simulation(factory(simulationSettings(m_scene)))
 {
     for (const RegionSpec& r : m_scene.regions)
-        m_simulation->addRegion(shapeContours(r.shape, m_scene.tracking.maxSpacing));
+        for (const StartingRegion& start : startingRegions(r, m_scene.tracking.maxSpacing))
+            m_simulation->addRegion(start.contours);
     // Drops at t = 0 are part of the starting picture.
     m_vertexLimitReached = m_script.applyDrops(*m_simulation, -INFINITY, 0.0);
 }

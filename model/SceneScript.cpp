@@ -9,8 +9,12 @@
 namespace vf::model {
 
 SceneScript::SceneScript(const Scene& scene)
-    : m_startingRegions(int(scene.regions.size()))
 {
+    for (const RegionSpec& r : scene.regions)
+        for (const StartingRegion& look : startingLooks(r))
+            m_looks.push_back({look.name, look.color, look.visible, int(m_looks.size())});
+    m_startingRegions = int(m_looks.size());
+
     for (const Stroke& s : scene.strokes) {
         if (const auto* drop = std::get_if<DropStroke>(&s))
             m_drops.push_back(*drop);
@@ -20,8 +24,8 @@ SceneScript::SceneScript(const Scene& scene)
     std::stable_sort(m_drops.begin(), m_drops.end(), [](const DropStroke& a, const DropStroke& b) { return a.time < b.time; });
 
     QSet<QString> taken;
-    for (const RegionSpec& r : scene.regions)
-        taken.insert(r.name);
+    for (const RegionLook& look : m_looks)
+        taken.insert(look.name);
     for (const DropStroke& d : m_drops)
         if (!d.name.isEmpty())
             taken.insert(d.name);
@@ -33,8 +37,6 @@ SceneScript::SceneScript(const Scene& scene)
                 return name;
     };
 
-    for (const RegionSpec& r : scene.regions)
-        m_looks.push_back({r.name, r.color, r.visible, int(m_looks.size())});
     for (std::size_t i = 0; i < m_drops.size(); ++i) {
         const QString name = m_drops[i].name.isEmpty() ? unusedDropName(int(i) + 1) : m_drops[i].name;
         taken.insert(name);

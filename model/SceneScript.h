@@ -12,8 +12,9 @@ class SceneScript {
 public:
     explicit SceneScript(const Scene& scene);
 
-    // The looks of the scene's regions and then of its drops, in the order they become simulation
-    // regions (drops by time, stable for equal times). Names are unique: unnamed drops are called
+    // The looks of the scene's starting regions (an SVG shape gives several, model/Scene.h
+    // startingLooks) and then of its drops, in the order they become simulation regions (drops by
+    // time, stable for equal times). Names are unique: unnamed drops are called
     // "drop N", skipping names already taken.
     const RegionTable& looks() const { return m_looks; }
     int startingRegionCount() const { return m_startingRegions; }

@@ -9,6 +9,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <type_traits>
+
 namespace vf::model {
 namespace {
 
@@ -71,6 +73,23 @@ QJsonObject toJson(const PolygonShape& p)
     return {{u"polygon"_s, listJson(p.points, pair)}};
 }
 
+QJsonObject toJson(const SvgShape& svg, SvgShapes how)
+{
+    if (how == SvgShapes::Reference)
+        return {{u"svg"_s, svg.file}};
+    return {{u"svg"_s, QJsonObject{{u"file"_s, svg.file}, {u"base64"_s, QString::fromLatin1(svg.text.toBase64())}}}};
+}
+
+QJsonObject toJson(const Shape& shape, SvgShapes how)
+{
+    return std::visit([how](const auto& s) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(s)>, SvgShape>)
+            return toJson(s, how);
+        else
+            return toJson(s);
+    }, shape);
+}
+
 QJsonObject toJson(const StylusStroke& s)
 {
     QJsonArray points;
@@ -98,17 +117,18 @@ QJsonObject toJson(const std::variant<Ts...>& value)
     return std::visit([](const auto& alternative) { return toJson(alternative); }, value);
 }
 
-QJsonObject toJson(const RegionSpec& region)
+QJsonObject toJson(const RegionSpec& region, SvgShapes how)
 {
-    return {{u"name"_s, region.name},
-            {u"color"_s, colorText(region.color)},
-            {u"visible"_s, region.visible},
-            {u"shape"_s, toJson(region.shape)}};
+    QJsonObject object{{u"name"_s, region.name}, {u"visible"_s, region.visible}, {u"shape"_s, toJson(region.shape, how)}};
+    // Without a colour, an SVG shape keeps the file's colours.
+    if (region.color.isValid())
+        object.insert(u"color"_s, colorText(region.color));
+    return object;
 }
 
 } // namespace
 
-QJsonObject sceneToJsonObject(const Scene& scene)
+QJsonObject sceneToJsonObject(const Scene& scene, SvgShapes svg)
 {
     return {
         {u"vectorfluid"_s, 1},
@@ -118,14 +138,14 @@ QJsonObject sceneToJsonObject(const Scene& scene)
         {u"flow"_s, flowToJson(scene.flow)},
         {u"time"_s, QJsonObject{{u"dt"_s, scene.time.dt}, {u"steps"_s, qint64(scene.time.steps)}}},
         {u"tracking"_s, trackingToJson(scene.tracking)},
-        {u"regions"_s, listJson(scene.regions, [](const RegionSpec& r) { return toJson(r); })},
+        {u"regions"_s, listJson(scene.regions, [svg](const RegionSpec& r) { return toJson(r, svg); })},
         {u"strokes"_s, listJson(scene.strokes, [](const Stroke& s) { return toJson(s); })},
     };
 }
 
 QByteArray sceneToJson(const Scene& scene)
 {
-    return QJsonDocument(sceneToJsonObject(scene)).toJson(QJsonDocument::Indented);
+    return QJsonDocument(sceneToJsonObject(scene, SvgShapes::Reference)).toJson(QJsonDocument::Indented);
 }
 
 QString writeSceneFile(const Scene& scene, const QString& path)

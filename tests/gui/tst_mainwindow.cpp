@@ -751,6 +751,47 @@ private slots:
         QCOMPARE(w.document().undoStack().count(), 1);
     }
 
+    // A scene may start from an SVG file: its shapes are the regions, and a project saved from it
+    // resets to them without the file. A broken SVG is refused with the reader's one line.
+    void sceneStartingFromAnSvgFile()
+    {
+        const QDir folder(m_dir.filePath(QStringLiteral("svgscene")));
+        QVERIFY(folder.mkpath(QStringLiteral(".")));
+        auto write = [&folder](const QString& name, const QByteArray& content) {
+            QFile f(folder.filePath(name));
+            QVERIFY(f.open(QIODevice::WriteOnly) && f.write(content) == content.size());
+        };
+        write(QStringLiteral("logo.vfscene"), "{\"vectorfluid\": 1, \"tracking\": {\"max_spacing\": 0.01}, \"flow\": {\"grid\": [32, 32]},"
+                                              " \"regions\": [{\"name\": \"logo\", \"shape\": {\"svg\": \"logo.svg\"}}]}");
+        write(QStringLiteral("logo.svg"), "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 10 10'>"
+                                          "<circle id='a' cx='3' cy='3' r='2' fill='#ff0000'/><circle id='b' cx='7' cy='7' r='2'/></svg>");
+        MainWindow& w = *m_window;
+        QVERIFY(w.openFile(folder.filePath(QStringLiteral("logo.vfscene"))));
+        w.simulation().setPlaying(false);
+        QCOMPARE(w.document().regions().size(), std::size_t(2));
+        QCOMPARE(w.document().regions()[0].name, QStringLiteral("logo/a"));
+        QCOMPARE(w.document().regions()[1].name, QStringLiteral("logo/b"));
+        const Geometry start = geometry(w);
+        QCOMPARE(start.size(), std::size_t(2));
+
+        const QString project = m_dir.filePath(QStringLiteral("fromsvg.vfproj"));
+        QVERIFY(w.saveTo(project));
+        QVERIFY(QFile::remove(folder.filePath(QStringLiteral("logo.svg"))));
+        MainWindow other;
+        other.setReport([this](const QString&, const QString& text) { m_reports << text; });
+        QVERIFY(other.openFile(project));
+        other.simulation().setPlaying(false);
+        other.simulation().stepOnce();
+        other.document().reset();
+        QVERIFY(geometry(other) == start);
+
+        write(QStringLiteral("logo.svg"), "<svg xmlns='http://www.w3.org/2000/svg'><path d='M 0 0 L 10'/></svg>");
+        const QString broken = folder.filePath(QStringLiteral("logo.vfscene"));
+        QVERIFY(!w.openFile(broken));
+        QCOMPARE(m_reports, QStringList{model::readSceneFile(broken).error});
+        QVERIFY(m_reports[0].contains(QStringLiteral("regions[0].shape.svg: logo.svg: ")));
+    }
+
     // T, a click, typing (letters that are shortcuts too) with the outlines shown as they are
     // typed, at the size set in the text options in canvas units; Enter sets it as one undo step,
     // Esc drops it.

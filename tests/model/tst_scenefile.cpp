@@ -204,7 +204,7 @@ private slots:
         QVERIFY(!result.scene.regions.empty() || !result.scene.strokes.empty());
         // Demo runs stay affordable on a laptop.
         QVERIFY(result.scene.time.steps <= 1000);
-        const SceneReadResult again = parseScene(sceneToJson(result.scene), file);
+        const SceneReadResult again = parseScene(sceneToJson(result.scene), file, kScenesDir);
         QVERIFY2(again.ok(), qPrintable(again.error));
         QVERIFY(again.scene == result.scene);
     }
