@@ -24,7 +24,12 @@ BufferedWriter& BufferedWriter::operator<<(std::string_view text)
 BufferedWriter& BufferedWriter::operator<<(const QString& text)
 {
     const QByteArray utf8 = text.toUtf8();
-    return *this << std::string_view(utf8.constData(), static_cast<std::size_t>(utf8.size()));
+    return *this << utf8;
+}
+
+BufferedWriter& BufferedWriter::operator<<(const QByteArray& bytes)
+{
+    return *this << std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size()));
 }
 
 BufferedWriter& BufferedWriter::operator<<(char c)
@@ -57,6 +62,7 @@ void BufferedWriter::flushIfFull()
 
 void BufferedWriter::flush()
 {
+    m_size += m_buffer.size();
     if (m_error.isEmpty() && !m_buffer.empty())
         m_error = model::writeAll(m_device, m_buffer.data(), static_cast<qint64>(m_buffer.size()));
     m_buffer.clear();

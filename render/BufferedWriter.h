@@ -4,6 +4,7 @@
 #include <QIODevice>
 #include <QString>
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -18,9 +19,13 @@ public:
     BufferedWriter& operator<<(std::string_view text);
     BufferedWriter& operator<<(const char* text) { return *this << std::string_view(text); }
     BufferedWriter& operator<<(const QString& text); // UTF-8
+    BufferedWriter& operator<<(const QByteArray& bytes);
     BufferedWriter& operator<<(char c);
     // The shortest text that reads back as exactly the same double (std::to_chars).
     BufferedWriter& operator<<(double value);
+
+    // Bytes given so far, written or buffered.
+    std::uint64_t size() const { return m_size + m_buffer.size(); }
 
     // Writes what is buffered; returns an empty string or what went wrong.
     QString finish();
@@ -32,6 +37,7 @@ private:
     QIODevice& m_device;
     std::string m_buffer;
     QString m_error;
+    std::uint64_t m_size = 0;
 };
 
 } // namespace vf::render
