@@ -108,6 +108,12 @@ bool foldsBack(const Segment& s, const Segment& t)
     return orientation(s.a, s.b, t.b) == 0 && glm::dot(s.b - s.a, t.b - t.a) < 0.0;
 }
 
+bool boxesOverlap(const Segment& s, const Segment& t)
+{
+    return std::max(s.a.x, s.b.x) >= std::min(t.a.x, t.b.x) && std::max(t.a.x, t.b.x) >= std::min(s.a.x, s.b.x) &&
+           std::max(s.a.y, s.b.y) >= std::min(t.a.y, t.b.y) && std::max(t.a.y, t.b.y) >= std::min(s.a.y, s.b.y);
+}
+
 bool areNeighbours(const Segment& s, const Segment& t)
 {
     if (s.polygon != t.polygon)
@@ -146,12 +152,16 @@ public:
         }
         if (m_segments.size() < 2)
             return;
-        // Cells about twice the mean edge length, no more of them than about four per edge.
+        // Square cells about twice the mean edge length, no more of them than about four per edge,
+        // and no more than two per edge along either side (polygons far apart make a wide extent
+        // of little area). Square: cells capped on one axis only grow long and thin along a long
+        // shape, and then each holds thousands of edges of its two sides (found by fuzzing).
+        const double n = double(m_segments.size());
         const Vec2 extent = glm::max(hi - lo, Vec2(1e-300));
-        double cell = std::max(2.0 * totalLength / double(m_segments.size()), 1e-300);
-        cell = std::max(cell, std::sqrt(extent.x * extent.y / double(4 * m_segments.size())));
-        m_columns = std::max(1, int(std::min(extent.x / cell, 8192.0)) + 1);
-        m_rows = std::max(1, int(std::min(extent.y / cell, 8192.0)) + 1);
+        double cell = std::max(2.0 * totalLength / n, 1e-300);
+        cell = std::max({cell, std::sqrt(extent.x * extent.y / (4.0 * n)), std::max(extent.x, extent.y) / (2.0 * n)});
+        m_columns = int(extent.x / cell) + 1;
+        m_rows = int(extent.y / cell) + 1;
         m_lo = lo;
         m_cell = Vec2(extent.x / (m_columns - 0.5), extent.y / (m_rows - 0.5));
 
@@ -176,6 +186,10 @@ public:
                 for (std::uint32_t j = i + 1; j < m_start[cell + 1] && found < limit; ++j) {
                     const Segment& s = m_segments[m_entries[i]];
                     const Segment& t = m_segments[m_entries[j]];
+                    // Edges whose bounding boxes are apart neither cross nor touch: most pairs of a
+                    // cell end here, before any orientation test.
+                    if (!boxesOverlap(s, t))
+                        continue;
                     // Each pair once: in the first cell both bounding boxes share.
                     if (std::max(row(std::min(s.a.y, s.b.y)), row(std::min(t.a.y, t.b.y))) != r ||
                         std::max(column(std::min(s.a.x, s.b.x)), column(std::min(t.a.x, t.b.x))) != c)
@@ -237,6 +251,11 @@ std::size_t countCrossings(const std::vector<const Polygon*>& polygons)
 
 bool isSimple(const Polygon& polygon)
 {
+    return isSimple(std::vector<const Polygon*>{&polygon});
+}
+
+bool isSimple(const std::vector<const Polygon*>& polygons)
+{
     bool simple = true;
     const auto meet = [&simple](const Segment& s, const Segment& t) {
         return !(simple = simple && !properlyIntersect(s, t) && !touch(s, t));
@@ -248,7 +267,7 @@ bool isSimple(const Polygon& polygon)
             s.index + 1 == t.index || (t.index == 0 && s.index + 1 == s.count) ? foldsBack(s, t) : foldsBack(t, s);
         return !(simple = simple && !folds);
     };
-    SegmentGrid({&polygon}).forEachMeeting(meet, neighboursMeet, 1);
+    SegmentGrid(polygons).forEachMeeting(meet, neighboursMeet, 1);
     return simple;
 }
 

@@ -34,5 +34,9 @@ std::size_t countCrossings(const std::vector<const Polygon*>& polygons);
 // edge (a figure eight pinched at a point, a repeated vertex) and no edge folds back onto its
 // neighbour. What a scene may start from.
 bool isSimple(const Polygon& polygon);
+// The same over several polygons together: each simple, and no two of them touching or crossing,
+// as the contours of one imported shape must be. It stops at the first contact, so contours lying
+// on one another (a path repeating one square thousands of times) are refused at once.
+bool isSimple(const std::vector<const Polygon*>& polygons);
 
 } // namespace vf::sim
