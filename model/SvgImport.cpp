@@ -277,8 +277,10 @@ private:
         if (text == u"currentColor")
             return currentColor;
         if (text.startsWith(u"url(")) {
-            // A gradient or pattern: its fallback colour if one follows, else black.
-            const QString fallback = text.sliced(text.indexOf(u')') + 1).trimmed();
+            // A gradient or pattern: its fallback colour if one follows, else black. Without the
+            // closing parenthesis nothing follows (not the whole text again: endless recursion).
+            const qsizetype close = text.indexOf(u')');
+            const QString fallback = close < 0 ? QString() : text.sliced(close + 1).trimmed();
             if (!fallback.isEmpty())
                 return paintValue(fallback, currentColor, inherited);
             m_notes << u"%1: fill %2 imported as black (gradients and patterns are not read)"_s.arg(m_where, svg::quoted(text));
