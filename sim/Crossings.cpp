@@ -91,23 +91,6 @@ bool properlyIntersect(const Segment& s, const Segment& t)
     return d3 != 0 && d4 != 0 && d3 != d4;
 }
 
-bool onSegment(Vec2 p, const Segment& s)
-{
-    return orientation(s.a, s.b, p) == 0 && p.x >= std::min(s.a.x, s.b.x) && p.x <= std::max(s.a.x, s.b.x) &&
-           p.y >= std::min(s.a.y, s.b.y) && p.y <= std::max(s.a.y, s.b.y);
-}
-
-bool touch(const Segment& s, const Segment& t)
-{
-    return onSegment(s.a, t) || onSegment(s.b, t) || onSegment(t.a, s) || onSegment(t.b, s);
-}
-
-// Consecutive edges a→b, b→c fold back when c lies on the line through a and b, behind b.
-bool foldsBack(const Segment& s, const Segment& t)
-{
-    return orientation(s.a, s.b, t.b) == 0 && glm::dot(s.b - s.a, t.b - t.a) < 0.0;
-}
-
 bool boxesOverlap(const Segment& s, const Segment& t)
 {
     return std::max(s.a.x, s.b.x) >= std::min(t.a.x, t.b.x) && std::max(t.a.x, t.b.x) >= std::min(s.a.x, s.b.x) &&
@@ -174,10 +157,10 @@ public:
         forEachCell([&](std::uint32_t k, std::size_t cell) { m_entries[fill[cell]++] = k; });
     }
 
-    // Calls meet(s, t) or, for neighbours sharing a vertex, meetNeighbours(s, t) once for every pair
-    // of edges whose bounding boxes share a cell, until it has returned true `limit` times.
-    template <typename Meet, typename MeetNeighbours>
-    void forEachMeeting(Meet meet, MeetNeighbours meetNeighbours, std::size_t limit) const
+    // Calls meet(s, t) once for every pair of edges whose bounding boxes share a cell, but for
+    // neighbours sharing a vertex, until it has returned true `limit` times.
+    template <typename Meet>
+    void forEachMeeting(Meet meet, std::size_t limit) const
     {
         std::size_t found = 0;
         for (std::size_t cell = 0; cell + 1 < m_start.size() && found < limit; ++cell) {
@@ -194,7 +177,7 @@ public:
                     if (std::max(row(std::min(s.a.y, s.b.y)), row(std::min(t.a.y, t.b.y))) != r ||
                         std::max(column(std::min(s.a.x, s.b.x)), column(std::min(t.a.x, t.b.x))) != c)
                         continue;
-                    if (areNeighbours(s, t) ? meetNeighbours(s, t) : meet(s, t))
+                    if (!areNeighbours(s, t) && meet(s, t))
                         ++found;
                 }
             }
@@ -237,7 +220,7 @@ std::vector<EdgeCrossing> findCrossings(const std::vector<const Polygon*>& polyg
         crossings.push_back({a.polygon, a.index, b.polygon, b.index, crossingPoint(a, b)});
         return true;
     };
-    SegmentGrid(polygons).forEachMeeting(meet, [](const Segment&, const Segment&) { return false; }, limit);
+    SegmentGrid(polygons).forEachMeeting(meet, limit);
     std::sort(crossings.begin(), crossings.end(), [](const EdgeCrossing& x, const EdgeCrossing& y) {
         return std::tie(x.polygonA, x.edgeA, x.polygonB, x.edgeB) < std::tie(y.polygonA, y.edgeA, y.polygonB, y.edgeB);
     });
@@ -247,28 +230,6 @@ std::vector<EdgeCrossing> findCrossings(const std::vector<const Polygon*>& polyg
 std::size_t countCrossings(const std::vector<const Polygon*>& polygons)
 {
     return findCrossings(polygons).size();
-}
-
-bool isSimple(const Polygon& polygon)
-{
-    return isSimple(std::vector<const Polygon*>{&polygon});
-}
-
-bool isSimple(const std::vector<const Polygon*>& polygons)
-{
-    bool simple = true;
-    const auto meet = [&simple](const Segment& s, const Segment& t) {
-        return !(simple = simple && !properlyIntersect(s, t) && !touch(s, t));
-    };
-    const auto neighboursMeet = [&simple](const Segment& s, const Segment& t) {
-        if (s.count == 3)
-            return false;  // a triangle's edges are all neighbours; only a zero area would be wrong
-        const bool folds =
-            s.index + 1 == t.index || (t.index == 0 && s.index + 1 == s.count) ? foldsBack(s, t) : foldsBack(t, s);
-        return !(simple = simple && !folds);
-    };
-    SegmentGrid(polygons).forEachMeeting(meet, neighboursMeet, 1);
-    return simple;
 }
 
 } // namespace vf::sim
