@@ -115,9 +115,14 @@ Outline rectOutline(Vec2 p, Vec2 size, Vec2 r)
 // Just inside contour i, the winding number is the sum of the directions of i and of the contours
 // around it, and the even-odd count is one more than the number of contours around it.
 // Bounding boxes first: a shape of thousands of small contours (a halftone) would otherwise take a
-// winding number over every contour for every contour.
-bool nonzeroFillsEvenOdd(const std::vector<sim::Polygon>& contours, const std::vector<int>& directions)
+// winding number over every contour for every contour. Contours nested by the thousand pass every
+// box, so the vertices visited are counted, and past kNestingBudget the answer is nullopt: unknown
+// (only a warning depends on it).
+constexpr std::size_t kNestingBudget = 100'000'000;
+
+std::optional<bool> nonzeroFillsEvenOdd(const std::vector<sim::Polygon>& contours, const std::vector<int>& directions)
 {
+    std::size_t visited = 0;
     std::vector<std::pair<Vec2, Vec2>> boxes;
     for (const sim::Polygon& contour : contours) {
         const auto [left, right] = std::minmax_element(contour.begin(), contour.end(), [](Vec2 a, Vec2 b) { return a.x < b.x; });
@@ -130,7 +135,11 @@ bool nonzeroFillsEvenOdd(const std::vector<sim::Polygon>& contours, const std::v
     for (std::size_t i = 0; i < contours.size(); ++i) {
         int winding = directions[i], depth = 0;
         for (std::size_t j = 0; j < contours.size(); ++j) {
-            if (j != i && inBox(boxes[j], contours[i].front()) && sim::windingNumber(contours[j], contours[i].front()) != 0) {
+            if (j == i || !inBox(boxes[j], contours[i].front()))
+                continue;
+            if ((visited += contours[j].size()) > kNestingBudget)
+                return std::nullopt;
+            if (sim::windingNumber(contours[j], contours[i].front()) != 0) {
                 winding += directions[j];
                 ++depth;
             }
@@ -414,7 +423,9 @@ private:
             contours.push_back(&polygon);
         if (!sim::isSimple(contours))
             fail(u"shape \"%1\" crosses itself"_s.arg(name));
-        if (!context.evenOdd && !nonzeroFillsEvenOdd(imported.contours, directions))
+        if (const std::optional<bool> agree = context.evenOdd ? true : nonzeroFillsEvenOdd(imported.contours, directions); !agree)
+            m_notes << u"%1: %2 \"%3\": too many nested contours to tell whether fill-rule=\"nonzero\" fills them as regions do (even-odd)"_s.arg(m_where, tag, name);
+        else if (!*agree)
             m_notes << u"%1: %2 \"%3\": a hole drawn the same way round as its outline, filled under fill-rule=\"nonzero\", is a hole here (regions fill even-odd)"_s.arg(m_where, tag, name);
         m_shapes.push_back(std::move(imported));
     }

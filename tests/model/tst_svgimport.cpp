@@ -535,6 +535,23 @@ private slots:
         verifyOneLineError(importBody(u"<path id='p' d='%1'/>"_s.arg(d), 0.01, u"viewBox=\"0 0 1000 1000\""_s), u"shape \"p\" crosses itself"_s);
     }
 
+    // 1,000 squares nested a millionth apart (400,000 vertices): every edge has a thousand others
+    // within a grid cell, and every contour lies inside the others' bounding boxes.
+    void nestedContoursImportInSeconds()
+    {
+        QString d;
+        for (int k = 0; k < 1000; ++k) {
+            const double lo = 0.1 + k * 1e-6, hi = 0.9 - k * 1e-6;
+            // Alternate ways round, as drawing tools write holes: nonzero and even-odd agree.
+            const QString path = k % 2 == 0 ? u"M%1 %1 H%2 V%2 H%1 Z "_s : u"M%1 %1 V%2 H%2 V%1 Z "_s;
+            d += path.arg(lo, 0, 'g', 17).arg(hi, 0, 'g', 17);
+        }
+        const SvgImport result = importBody(u"<path d='%1'/>"_s.arg(d), 0.01, u"viewBox=\"0 0 1 1\""_s);
+        QVERIFY2(result.ok(), qPrintable(result.error));
+        QCOMPARE(result.shapes.front().contours.size(), std::size_t(1000));
+        QVERIFY2(result.warnings.join(u'\n').contains(u"too many nested contours to tell"_s), qPrintable(result.warnings.join(u'\n')));
+    }
+
     void overlappingElementsAreSeparateShapes()
     {
         const SvgImport result = importBody(u"<rect width='60' height='60'/><rect x='30' y='30' width='60' height='60'/>"_s);
