@@ -64,6 +64,10 @@ int orientation(Vec2 a, Vec2 b, Vec2 c)
     const double bound = 3.3306690738754716e-16 * (std::abs(left) + std::abs(right));
     if (det > bound || -det > bound)
         return det > 0.0 ? 1 : -1;
+    // On one vertical or horizontal line (the sides of rectangles, H and V in SVG paths): collinear
+    // exactly, and common enough that the expansion arithmetic below would dominate.
+    if ((a.x == c.x && b.x == c.x) || (a.y == c.y && b.y == c.y))
+        return 0;
     // det = ax·by − ay·bx + bx·cy − by·cx + cx·ay − cy·ax, each product exact as two doubles.
     ExactSum<12> sum;
     sum.addProduct(a.x, b.y);
