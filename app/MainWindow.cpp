@@ -31,6 +31,8 @@
 #include <QThreadPool>
 #include <QToolBar>
 
+#include <exception>
+
 namespace vf::app {
 
 namespace {
@@ -404,15 +406,21 @@ bool MainWindow::importSvg(const QString& path)
         return false;
     }
     const model::Scene& scene = m_document.scene();
-    const model::SvgImport imported = model::importSvgFile(path, scene.canvas.width, scene.canvas.height,
-                                                           m_document.settings().tracking.maxSpacing);
+    model::SvgImport imported;
+    std::vector<model::NewRegion> regions;
+    // The importer reports its own errors as a line; anything else it or the copy throws (memory)
+    // must not take the user's document down with it. Nothing is added before this succeeds.
+    try {
+        imported = model::importSvgFile(path, scene.canvas.width, scene.canvas.height, m_document.settings().tracking.maxSpacing);
+        for (const model::ImportedShape& shape : imported.shapes)
+            regions.push_back({shape.name, shape.color, shape.contours});
+    } catch (const std::exception& e) {
+        imported.error = tr("%1: cannot import: %2").arg(QFileInfo(path).fileName(), QString::fromLocal8Bit(e.what()));
+    }
     if (!imported.ok()) {
         m_report(tr("Cannot import SVG"), imported.error);
         return false;
     }
-    std::vector<model::NewRegion> regions;
-    for (const model::ImportedShape& shape : imported.shapes)
-        regions.push_back({shape.name, shape.color, shape.contours});
     m_document.addRegions(tr("Import %1").arg(QFileInfo(path).fileName()), regions);
     if (!imported.warnings.isEmpty())
         statusBar()->showMessage(imported.warnings.join(QStringLiteral("; ")), 10000);

@@ -4,6 +4,7 @@
 #include "app/Commands.h"
 
 #include <QCoreApplication>
+#include <QTextStream>
 
 #include <cstring>
 
@@ -16,6 +17,15 @@ const char* usage =
     "                          [--stats FILE.json] [--check-topology K]\n"
     "       vectorfluid devices\n"
     "`vectorfluid render --help` and `vectorfluid devices --help` describe the commands.\n";
+
+// On the command line stderr carries one line per error and nothing else (README). Qt's own
+// messages are about the program's insides (a font database, a platform plugin), so they are
+// dropped; a fatal one is still printed, as the program aborts after it.
+void dropQtMessages(QtMsgType type, const QMessageLogContext&, const QString& message)
+{
+    if (type == QtFatalMsg)
+        QTextStream(stderr) << "vectorfluid: " << message << '\n';
+}
 
 bool isHeadless(const char* argument)
 {
@@ -41,6 +51,7 @@ int main(int argc, char** argv)
     if (argc < 2 || !isHeadless(argv[1]))
         return vf::app::guiMain(argc, argv);
 
+    qInstallMessageHandler(dropQtMessages);
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("vectorfluid"));
     QStringList arguments = QCoreApplication::arguments().mid(1);

@@ -11,6 +11,8 @@
 #include <QJsonDocument>
 #include <QtEndian>
 
+#include <zlib.h>
+
 #include <atomic>
 #include <exception>
 #include <thread>
@@ -134,9 +136,18 @@ sim::SimulationState readState(const BlobRef& ref, QByteArrayView data, StateEnc
         where.fail(u"corrupt compressed data (it does not start with raw_length %1)"_s.arg(ref.rawLength));
     if (ref.rawLength > (ref.length - 4) * kMaxInflation)
         where.fail(u"raw_length %1 is more than %2 compressed bytes can hold"_s.arg(ref.rawLength).arg(ref.length));
-    const QByteArray raw = qUncompress(reinterpret_cast<const uchar*>(blob.data()), blob.size());
-    if (raw.size() != ref.rawLength)
-        where.fail(u"corrupt compressed data (it inflates to %1 bytes, not raw_length %2)"_s.arg(raw.size()).arg(ref.rawLength));
+    // zlib itself rather than qUncompress, which prints "qUncompress: Input data is corrupted" to
+    // stderr: the one line of the error must be all a bad file shows.
+    QByteArray raw(qsizetype(ref.rawLength), Qt::Uninitialized);
+    uLongf inflated = uLongf(ref.rawLength);
+    const int status = uncompress(reinterpret_cast<Bytef*>(raw.data()), &inflated,
+                                  reinterpret_cast<const Bytef*>(blob.data() + 4), uLong(blob.size() - 4));
+    if (status == Z_BUF_ERROR && inflated == uLongf(ref.rawLength))
+        where.fail(u"corrupt compressed data (it inflates to more than raw_length %1)"_s.arg(ref.rawLength));
+    if (status != Z_OK)
+        where.fail(u"corrupt compressed data (zlib: %1)"_s.arg(QString::fromLatin1(zError(status))));
+    if (inflated != uLongf(ref.rawLength))
+        where.fail(u"corrupt compressed data (it inflates to %1 bytes, not raw_length %2)"_s.arg(inflated).arg(ref.rawLength));
     return decodeState(raw, encoding, where);
 }
 

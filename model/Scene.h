@@ -160,6 +160,9 @@ inline constexpr std::size_t maxRegions = 100'000;
 inline constexpr std::size_t maxPolygonPoints = 10'000'000;
 inline constexpr std::size_t maxStrokes = 1'000'000;
 inline constexpr double maxCanvasSize = 1e6;
+// Shorter lengths vanish next to coordinates of up to 1e6 (a double holds about 16 digits): a circle
+// that small would have all its vertices on one point, a canvas that narrow an infinite scale.
+inline constexpr double minLength = 1e-9;
 } // namespace limits
 
 } // namespace vf::model

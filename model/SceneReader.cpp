@@ -29,7 +29,13 @@ constexpr double kHuge = std::numeric_limits<double>::max();
 
 // Shapes may lie outside the canvas, but coordinates this far out only come from mistakes.
 double coordinate(const Field& field) { return field.number(-limits::maxCanvasSize, limits::maxCanvasSize); }
-double length(const Field& field) { return field.positive(limits::maxCanvasSize); }
+double length(const Field& field)
+{
+    const double value = field.positive(limits::maxCanvasSize);
+    if (value < limits::minLength)
+        field.fail(u"must be at least %1, is %2"_s.arg(limits::minLength).arg(value));
+    return value;
+}
 double seconds(const Field& field) { return field.nonNegative(); }
 
 sim::Vec2 point(const Field& field)

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <new>
 #include <numbers>
 #include <optional>
@@ -32,6 +33,9 @@ using svg::Segment;
 using svg::Vec2;
 
 constexpr qint64 kMaxFileBytes = qint64(256) << 20;
+// Groups are read by recursion; drawings nest a few dozen deep, a hostile file could nest millions
+// and overflow the stack.
+constexpr int kMaxGroupDepth = 1000;
 
 // Thrown by any check; importSvg turns it into the error line. `where` is "line:col" or empty.
 struct ImportError {
@@ -110,12 +114,32 @@ Outline rectOutline(Vec2 p, Vec2 size, Vec2 r)
 // Whether SVG's nonzero rule fills these non-crossing contours as the regions' even-odd rule does.
 // Just inside contour i, the winding number is the sum of the directions of i and of the contours
 // around it, and the even-odd count is one more than the number of contours around it.
-bool nonzeroFillsEvenOdd(const std::vector<sim::Polygon>& contours, const std::vector<int>& directions)
+// Bounding boxes first: a shape of thousands of small contours (a halftone) would otherwise take a
+// winding number over every contour for every contour. Contours nested by the thousand pass every
+// box, so the vertices visited are counted, and past kNestingBudget the answer is nullopt: unknown
+// (only a warning depends on it).
+constexpr std::size_t kNestingBudget = 100'000'000;
+
+std::optional<bool> nonzeroFillsEvenOdd(const std::vector<sim::Polygon>& contours, const std::vector<int>& directions)
 {
+    std::size_t visited = 0;
+    std::vector<std::pair<Vec2, Vec2>> boxes;
+    for (const sim::Polygon& contour : contours) {
+        const auto [left, right] = std::minmax_element(contour.begin(), contour.end(), [](Vec2 a, Vec2 b) { return a.x < b.x; });
+        const auto [bottom, top] = std::minmax_element(contour.begin(), contour.end(), [](Vec2 a, Vec2 b) { return a.y < b.y; });
+        boxes.emplace_back(Vec2(left->x, bottom->y), Vec2(right->x, top->y));
+    }
+    const auto inBox = [](const std::pair<Vec2, Vec2>& box, Vec2 p) {
+        return p.x >= box.first.x && p.x <= box.second.x && p.y >= box.first.y && p.y <= box.second.y;
+    };
     for (std::size_t i = 0; i < contours.size(); ++i) {
         int winding = directions[i], depth = 0;
         for (std::size_t j = 0; j < contours.size(); ++j) {
-            if (j != i && sim::windingNumber(contours[j], contours[i].front()) != 0) {
+            if (j == i || !inBox(boxes[j], contours[i].front()))
+                continue;
+            if ((visited += contours[j].size()) > kNestingBudget)
+                return std::nullopt;
+            if (sim::windingNumber(contours[j], contours[i].front()) != 0) {
                 winding += directions[j];
                 ++depth;
             }
@@ -262,8 +286,10 @@ private:
         if (text == u"currentColor")
             return currentColor;
         if (text.startsWith(u"url(")) {
-            // A gradient or pattern: its fallback colour if one follows, else black.
-            const QString fallback = text.sliced(text.indexOf(u')') + 1).trimmed();
+            // A gradient or pattern: its fallback colour if one follows, else black. Without the
+            // closing parenthesis nothing follows (not the whole text again: endless recursion).
+            const qsizetype close = text.indexOf(u')');
+            const QString fallback = close < 0 ? QString() : text.sliced(close + 1).trimmed();
             if (!fallback.isEmpty())
                 return paintValue(fallback, currentColor, inherited);
             m_notes << u"%1: fill %2 imported as black (gradients and patterns are not read)"_s.arg(m_where, svg::quoted(text));
@@ -291,9 +317,11 @@ private:
             ++it->second;
     }
 
-    // Children of the current element up to its end tag.
-    void readChildren(const Context& parent)
+    // Children of the current element up to its end tag; depth counts the groups around them.
+    void readChildren(const Context& parent, int depth = 0)
     {
+        if (depth > kMaxGroupDepth)
+            fail(u"groups nested deeper than %1 levels"_s.arg(kMaxGroupDepth));
         while (m_xml.readNextStartElement()) {
             const QString tag = m_xml.name().toString();
             if (m_xml.namespaceUri() != m_svgNamespace || isNeverDrawn(tag)) {
@@ -305,7 +333,7 @@ private:
             if (!context) {
                 m_xml.skipCurrentElement();
             } else if (tag == u"g" || tag == u"a") {
-                readChildren(*context);
+                readChildren(*context, depth + 1);
             } else if (tag == u"path" || tag == u"polygon" || tag == u"rect" || tag == u"circle" || tag == u"ellipse") {
                 importShape(tag, *context);
                 m_xml.skipCurrentElement();  // children such as <title> or <animate>
@@ -383,8 +411,6 @@ private:
             std::optional<sim::Polygon> contour = startingContour(polyline, m_spacing);
             if (!contour)
                 continue;
-            if (!sim::isSimple(*contour))
-                fail(u"shape \"%1\" crosses itself"_s.arg(name));
             imported.contours.push_back(std::move(*contour));
             directions.push_back(sim::signedArea(polyline) > 0.0 ? 1 : -1);
         }
@@ -395,9 +421,11 @@ private:
         std::vector<const sim::Polygon*> contours;
         for (const sim::Polygon& polygon : imported.contours)
             contours.push_back(&polygon);
-        if (sim::countCrossings(contours) > 0)
+        if (!sim::isSimple(contours))
             fail(u"shape \"%1\" crosses itself"_s.arg(name));
-        if (!context.evenOdd && !nonzeroFillsEvenOdd(imported.contours, directions))
+        if (const std::optional<bool> agree = context.evenOdd ? true : nonzeroFillsEvenOdd(imported.contours, directions); !agree)
+            m_notes << u"%1: %2 \"%3\": too many nested contours to tell whether fill-rule=\"nonzero\" fills them as regions do (even-odd)"_s.arg(m_where, tag, name);
+        else if (!*agree)
             m_notes << u"%1: %2 \"%3\": a hole drawn the same way round as its outline, filled under fill-rule=\"nonzero\", is a hole here (regions fill even-odd)"_s.arg(m_where, tag, name);
         m_shapes.push_back(std::move(imported));
     }
@@ -436,6 +464,9 @@ SvgImport importSvg(const QByteArray& svg, const QString& sourceName, double can
     } catch (const std::bad_alloc&) {
         result = {};
         result.error = sourceName + u": not enough memory to import it"_s;
+    } catch (const std::exception& e) {  // a defect of ours; still one line, and the caller goes on
+        result = {};
+        result.error = sourceName + u": cannot import: "_s + QString::fromLocal8Bit(e.what());
     }
     return result;
 }

@@ -64,6 +64,10 @@ int orientation(Vec2 a, Vec2 b, Vec2 c)
     const double bound = 3.3306690738754716e-16 * (std::abs(left) + std::abs(right));
     if (det > bound || -det > bound)
         return det > 0.0 ? 1 : -1;
+    // On one vertical or horizontal line (the sides of rectangles, H and V in SVG paths): collinear
+    // exactly, and common enough that the expansion arithmetic below would dominate.
+    if ((a.x == c.x && b.x == c.x) || (a.y == c.y && b.y == c.y))
+        return 0;
     // det = ax·by − ay·bx + bx·cy − by·cx + cx·ay − cy·ax, each product exact as two doubles.
     ExactSum<12> sum;
     sum.addProduct(a.x, b.y);
@@ -91,21 +95,10 @@ bool properlyIntersect(const Segment& s, const Segment& t)
     return d3 != 0 && d4 != 0 && d3 != d4;
 }
 
-bool onSegment(Vec2 p, const Segment& s)
+bool boxesOverlap(const Segment& s, const Segment& t)
 {
-    return orientation(s.a, s.b, p) == 0 && p.x >= std::min(s.a.x, s.b.x) && p.x <= std::max(s.a.x, s.b.x) &&
-           p.y >= std::min(s.a.y, s.b.y) && p.y <= std::max(s.a.y, s.b.y);
-}
-
-bool touch(const Segment& s, const Segment& t)
-{
-    return onSegment(s.a, t) || onSegment(s.b, t) || onSegment(t.a, s) || onSegment(t.b, s);
-}
-
-// Consecutive edges a→b, b→c fold back when c lies on the line through a and b, behind b.
-bool foldsBack(const Segment& s, const Segment& t)
-{
-    return orientation(s.a, s.b, t.b) == 0 && glm::dot(s.b - s.a, t.b - t.a) < 0.0;
+    return std::max(s.a.x, s.b.x) >= std::min(t.a.x, t.b.x) && std::max(t.a.x, t.b.x) >= std::min(s.a.x, s.b.x) &&
+           std::max(s.a.y, s.b.y) >= std::min(t.a.y, t.b.y) && std::max(t.a.y, t.b.y) >= std::min(s.a.y, s.b.y);
 }
 
 bool areNeighbours(const Segment& s, const Segment& t)
@@ -146,12 +139,16 @@ public:
         }
         if (m_segments.size() < 2)
             return;
-        // Cells about twice the mean edge length, no more of them than about four per edge.
+        // Square cells about twice the mean edge length, no more of them than about four per edge,
+        // and no more than two per edge along either side (polygons far apart make a wide extent
+        // of little area). Square: cells capped on one axis only grow long and thin along a long
+        // shape, and then each holds thousands of edges of its two sides (found by fuzzing).
+        const double n = double(m_segments.size());
         const Vec2 extent = glm::max(hi - lo, Vec2(1e-300));
-        double cell = std::max(2.0 * totalLength / double(m_segments.size()), 1e-300);
-        cell = std::max(cell, std::sqrt(extent.x * extent.y / double(4 * m_segments.size())));
-        m_columns = std::max(1, int(std::min(extent.x / cell, 8192.0)) + 1);
-        m_rows = std::max(1, int(std::min(extent.y / cell, 8192.0)) + 1);
+        double cell = std::max(2.0 * totalLength / n, 1e-300);
+        cell = std::max({cell, std::sqrt(extent.x * extent.y / (4.0 * n)), std::max(extent.x, extent.y) / (2.0 * n)});
+        m_columns = int(extent.x / cell) + 1;
+        m_rows = int(extent.y / cell) + 1;
         m_lo = lo;
         m_cell = Vec2(extent.x / (m_columns - 0.5), extent.y / (m_rows - 0.5));
 
@@ -164,10 +161,10 @@ public:
         forEachCell([&](std::uint32_t k, std::size_t cell) { m_entries[fill[cell]++] = k; });
     }
 
-    // Calls meet(s, t) or, for neighbours sharing a vertex, meetNeighbours(s, t) once for every pair
-    // of edges whose bounding boxes share a cell, until it has returned true `limit` times.
-    template <typename Meet, typename MeetNeighbours>
-    void forEachMeeting(Meet meet, MeetNeighbours meetNeighbours, std::size_t limit) const
+    // Calls meet(s, t) once for every pair of edges whose bounding boxes share a cell, but for
+    // neighbours sharing a vertex, until it has returned true `limit` times.
+    template <typename Meet>
+    void forEachMeeting(Meet meet, std::size_t limit) const
     {
         std::size_t found = 0;
         for (std::size_t cell = 0; cell + 1 < m_start.size() && found < limit; ++cell) {
@@ -176,11 +173,15 @@ public:
                 for (std::uint32_t j = i + 1; j < m_start[cell + 1] && found < limit; ++j) {
                     const Segment& s = m_segments[m_entries[i]];
                     const Segment& t = m_segments[m_entries[j]];
+                    // Edges whose bounding boxes are apart neither cross nor touch: most pairs of a
+                    // cell end here, before any orientation test.
+                    if (!boxesOverlap(s, t))
+                        continue;
                     // Each pair once: in the first cell both bounding boxes share.
                     if (std::max(row(std::min(s.a.y, s.b.y)), row(std::min(t.a.y, t.b.y))) != r ||
                         std::max(column(std::min(s.a.x, s.b.x)), column(std::min(t.a.x, t.b.x))) != c)
                         continue;
-                    if (areNeighbours(s, t) ? meetNeighbours(s, t) : meet(s, t))
+                    if (!areNeighbours(s, t) && meet(s, t))
                         ++found;
                 }
             }
@@ -223,7 +224,7 @@ std::vector<EdgeCrossing> findCrossings(const std::vector<const Polygon*>& polyg
         crossings.push_back({a.polygon, a.index, b.polygon, b.index, crossingPoint(a, b)});
         return true;
     };
-    SegmentGrid(polygons).forEachMeeting(meet, [](const Segment&, const Segment&) { return false; }, limit);
+    SegmentGrid(polygons).forEachMeeting(meet, limit);
     std::sort(crossings.begin(), crossings.end(), [](const EdgeCrossing& x, const EdgeCrossing& y) {
         return std::tie(x.polygonA, x.edgeA, x.polygonB, x.edgeB) < std::tie(y.polygonA, y.edgeA, y.polygonB, y.edgeB);
     });
@@ -233,23 +234,6 @@ std::vector<EdgeCrossing> findCrossings(const std::vector<const Polygon*>& polyg
 std::size_t countCrossings(const std::vector<const Polygon*>& polygons)
 {
     return findCrossings(polygons).size();
-}
-
-bool isSimple(const Polygon& polygon)
-{
-    bool simple = true;
-    const auto meet = [&simple](const Segment& s, const Segment& t) {
-        return !(simple = simple && !properlyIntersect(s, t) && !touch(s, t));
-    };
-    const auto neighboursMeet = [&simple](const Segment& s, const Segment& t) {
-        if (s.count == 3)
-            return false;  // a triangle's edges are all neighbours; only a zero area would be wrong
-        const bool folds =
-            s.index + 1 == t.index || (t.index == 0 && s.index + 1 == s.count) ? foldsBack(s, t) : foldsBack(t, s);
-        return !(simple = simple && !folds);
-    };
-    SegmentGrid({&polygon}).forEachMeeting(meet, neighboursMeet, 1);
-    return simple;
 }
 
 } // namespace vf::sim

@@ -25,7 +25,8 @@ struct EdgeCrossing {
 
 // Every pair of edges that properly cross, over all given polygons together (edges of one polygon
 // count too, except neighbours sharing a vertex), at most `limit` of them, ordered by polygon and
-// edge. Uses a uniform segment grid: about linear in the number of edges.
+// edge. Uses a uniform segment grid: about linear in the number of edges where they are spread
+// out, quadratic where thousands lie within one cell (isSimple does not share that limit).
 std::vector<EdgeCrossing> findCrossings(const std::vector<const Polygon*>& polygons,
                                         std::size_t limit = std::numeric_limits<std::size_t>::max());
 std::size_t countCrossings(const std::vector<const Polygon*>& polygons);
@@ -34,5 +35,9 @@ std::size_t countCrossings(const std::vector<const Polygon*>& polygons);
 // edge (a figure eight pinched at a point, a repeated vertex) and no edge folds back onto its
 // neighbour. What a scene may start from.
 bool isSimple(const Polygon& polygon);
+// The same over several polygons together: each simple, and no two of them touching or crossing,
+// as the contours of one imported shape must be. A sweep line (sim/Simplicity.cpp): n log n in the
+// edges whatever their layout, and it stops at the first contact.
+bool isSimple(const std::vector<const Polygon*>& polygons);
 
 } // namespace vf::sim

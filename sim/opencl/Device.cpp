@@ -97,8 +97,12 @@ std::uint64_t Device::globalMemory() const
 cl::Program Device::build(const std::string& source, const std::string& what, const std::string& options) const
 {
     cl::Program program(m_context, source);
+    // -w (OpenCL's own option): PoCL's compiler prints "N warnings generated." straight to the
+    // process's stderr, which must carry nothing but the one line of an error. A failed build
+    // still brings its errors in the log below.
+    const std::string quiet = "-w " + options;
     try {
-        program.build({m_device}, options.c_str());
+        program.build({m_device}, quiet.c_str());
     } catch (const cl::BuildError& e) {
         // Khronos CLHPP: the log per device travels with the exception.
         std::string log;

@@ -356,6 +356,9 @@ void TestCli::badCommandLineIsRefused_data()
                                                QStringLiteral("--every"), QStringLiteral("0")}
                                 << QStringLiteral("--every: '0'");
     QTest::newRow("no scene") << QStringList{render} << QStringLiteral("no scene file given");
+    // Qt's file engine adds "QFSFileEngine::open: No file name specified" of its own.
+    QTest::newRow("empty scene name") << QStringList{render, QString()} << QStringLiteral(": cannot open: No file name specified");
+    QTest::newRow("scene is a folder") << QStringList{render, QStringLiteral("@dir")} << QStringLiteral("cannot open");
     QTest::newRow("two scenes") << QStringList{render, QStringLiteral("@scene"), QStringLiteral("@scene")}
                                 << QStringLiteral("only one scene file");
     QTest::newRow("devices with an argument") << QStringList{QStringLiteral("devices"), QStringLiteral("--all")}

@@ -179,6 +179,35 @@ private slots:
                            u"clipboard: canvas: must be an object, not the number 3"_s);
     }
 
+    // What fuzzing finds slowly (docs/fuzzing.md): deep nesting and numbers at the edges of double
+    // are refused with one line, never a crash or a stack overflow.
+    void hostileInputGivesOneLineError_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("expected");
+        const auto circle = [](const char* radius) {
+            return QByteArray("{\"vectorfluid\": 1, \"regions\": [{\"name\": \"a\", \"color\": \"#000000\", \"shape\": {\"circle\": {\"center\": [0.5, 0.5], \"radius\": ") +
+                   radius + "}}}]}";
+        };
+        QTest::newRow("deep arrays") << QByteArray("{\"vectorfluid\": 1, \"regions\": ") + QByteArray("[").repeated(100'000) +
+                                            QByteArray("]").repeated(100'000) + "}"
+                                     << u"hostile: 1:1054: broken JSON: too deeply nested document"_s;
+        QTest::newRow("deep objects") << QByteArray("{\"a\": ").repeated(100'000) + "1" + QByteArray("}").repeated(100'000)
+                                      << u"broken JSON: too deeply nested document"_s;
+        QTest::newRow("radius 1e308") << circle("1e308") << u"regions[0].shape.circle.radius: must be at most 1e+06, is 1e+308"_s;
+        QTest::newRow("radius 1e-308") << circle("1e-308") << u"regions[0].shape.circle.radius: must be at least 1e-09, is 1e-308"_s;
+        QTest::newRow("radius denormal") << circle("4.9e-324") << u"regions[0].shape.circle.radius: must be at least 1e-09"_s;
+        QTest::newRow("radius 1e309") << circle("1e309") << u"broken JSON: illegal number"_s;
+        QTest::newRow("canvas 1e308") << QByteArray("{\"vectorfluid\": 1, \"canvas\": {\"width\": 1e308, \"height\": 1e308}}") << u"canvas.width: must be at most 1e+06, is 1e+308"_s;
+        QTest::newRow("canvas denormal") << QByteArray("{\"vectorfluid\": 1, \"canvas\": {\"width\": 4.9e-324, \"height\": 1}}") << u"canvas.width: must be at least 1e-09"_s;
+    }
+    void hostileInputGivesOneLineError()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, expected);
+        verifyOneLineError(parseScene(json, u"hostile"_s).error, u"hostile"_s, expected);
+    }
+
     void omittedKeysTakeTheDefaults()
     {
         const SceneReadResult result = parseScene("{\"vectorfluid\": 1}", u"minimal"_s);

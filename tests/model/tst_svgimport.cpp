@@ -449,6 +449,109 @@ private slots:
         verifyOneLineError(importBody(body), expected);
     }
 
+    // What fuzzing finds slowly or not at all (docs/fuzzing.md): each input is imported or refused
+    // with one line, never a crash, a hang or an exception.
+    void hostileInput_data()
+    {
+        QTest::addColumn<QByteArray>("svg");
+        QTest::addColumn<QString>("expected");  // empty: imported
+        const auto wrap = [](const QByteArray& body, const QByteArray& root = "viewBox='0 0 100 100'") {
+            return "<svg xmlns='http://www.w3.org/2000/svg' " + root + ">" + body + "</svg>";
+        };
+        // An arc whose radii are far too small to reach its end is scaled up to a half ellipse.
+        QTest::newRow("arc radii 1e-300") << wrap("<path d='M0 0 a1e-300 1e-300 0 1 1 10 10z'/>") << QString();
+        QTest::newRow("arc radii denormal") << wrap("<path d='M0 0 a4.9e-324 4.9e-324 30 1 1 10 10z'/>") << QString();
+        // Their ratio, 5e-14, is kept: an ellipse far too long to flatten.
+        QTest::newRow("arc radii denormal and tiny") << wrap("<path d='M0 0 a4.9e-324 1e-310 30 1 1 10 10z'/>") << u"would need more than"_s;
+        QTest::newRow("arc radii 1e308") << wrap("<path d='M0 0 h10 a1e308 1e308 0 0 1 -10 10z'/>") << QString();
+        QTest::newRow("coordinates 1e308") << wrap("<rect width='1e308' height='1e308'/>") << u"would need more than"_s;
+        QTest::newRow("coordinates -1e308") << wrap("<path d='M-1e308 0 L1e308 0 L0 1e308z'/>") << u"would need more than"_s;
+        QTest::newRow("coordinates 1e-308") << wrap("<rect x='1e-308' width='1e-308' height='1e-308'/>") << u"nothing to import"_s;
+        QTest::newRow("overflowing number") << wrap("<rect width='1e309' height='5'/>") << u"width"_s;
+        QTest::newRow("inf text") << wrap("<rect width='inf' height='5'/>") << u"width"_s;
+        QTest::newRow("nan text") << wrap("<path d='M0 0 L nan 5 L5 5z'/>") << u"bad path data"_s;
+        QTest::newRow("denormal viewBox") << wrap("<rect width='5' height='5'/>", "viewBox='0 0 4.9e-324 4.9e-324'")
+                                          << u"would need more than"_s;
+        QTest::newRow("huge viewBox") << wrap("<rect width='1e300' height='1e300'/>", "viewBox='0 0 1e308 1e308'") << QString();
+        QTest::newRow("scale(0)") << wrap("<rect width='5' height='5' transform='scale(0)'/>") << u"nothing to import"_s;
+        QTest::newRow("scale(0 1)") << wrap("<rect width='5' height='5' transform='scale(0 1)'/>") << u"nothing to import"_s;
+        QTest::newRow("zero matrix") << wrap("<g transform='matrix(0 0 0 0 0 0)'><circle r='5'/></g>") << u"nothing to import"_s;
+        QTest::newRow("scale 1e308 twice") << wrap("<g transform='scale(1e308)'><rect width='5' height='5' transform='scale(1e308)'/></g>")
+                                           << u"would need more than"_s;
+        QTest::newRow("scale 1e-308 twice") << wrap("<g transform='scale(1e-308)'><rect width='5' height='5' transform='scale(1e-308)'/></g>")
+                                            << u"nothing to import"_s;
+        // Entities: Qt stops expanding at its limit, so a billion laughs is refused, not expanded.
+        QByteArray laughs = "<?xml version='1.0'?><!DOCTYPE svg [<!ENTITY l0 'M0 0h1v1h-1z'>";
+        for (int i = 1; i <= 9; ++i)
+            laughs += QByteArray("<!ENTITY l%1 '").replace("%1", QByteArray::number(i)) +
+                      QByteArray("&l%1;").replace("%1", QByteArray::number(i - 1)).repeated(10) + "'>";
+        QTest::newRow("billion laughs") << laughs + "]>" + wrap("<path d='&l9;'/>") << u"not well-formed XML"_s;
+        QTest::newRow("entity loop") << "<!DOCTYPE svg [<!ENTITY a '&b;'><!ENTITY b '&a;'>]>" + wrap("<path d='&a;'/>")
+                                     << u"not well-formed XML"_s;
+        // References are never followed (docs/svg-import.md), so one that loops is skipped.
+        QTest::newRow("use referring to itself") << wrap("<use id='u' href='#u'/><rect width='5' height='5'/>") << QString();
+        QTest::newRow("fill referring to itself") << wrap("<linearGradient id='g' href='#g'/><rect width='5' height='5' fill='url(#g)'/>")
+                                                  << QString();
+        // Found by fuzzing (docs/fuzzing.md).
+        QTest::newRow("url without parenthesis") << wrap("<rect width='5' height='5' fill='url(#e76f51'/>") << QString();
+        QTest::newRow("long thin path") << wrap("<path d='M110,10 C130,0 0,1050 170,10 S190,40 170,601005Q9 , 170,3 0T110,10 Z'/>",
+                                                "width='200' height='100'")
+                                        << QString();
+        QTest::newRow("deep groups") << wrap(QByteArray("<g>").repeated(100'000) + "<rect width='5' height='5'/>" +
+                                             QByteArray("</g>").repeated(100'000))
+                                     << u"nested deeper than"_s;
+        QTest::newRow("deep unknown elements") << wrap(QByteArray("<x>").repeated(100'000) + QByteArray("</x>").repeated(100'000))
+                                               << u"nothing to import"_s;
+    }
+    void hostileInput()
+    {
+        QFETCH(QByteArray, svg);
+        QFETCH(QString, expected);
+        const SvgImport result = importSvg(svg, u"test.svg"_s, 1.0, 1.0, 0.01);
+        if (!expected.isEmpty()) {
+            verifyOneLineError(result, expected);
+            return;
+        }
+        QVERIFY2(result.ok(), qPrintable(result.error));
+        for (const ImportedShape& shape : result.shapes)
+            verifyWellFormed(shape, 0.01);
+    }
+
+    // Contours lying on one another are refused at their first contact: the time grows with the
+    // segments, not with their pairs (tests/model/CMakeLists.txt gives this test a time limit).
+    void coincidentSegmentsRefusedQuickly_data()
+    {
+        QTest::addColumn<QString>("d");
+        constexpr int kRepeats = 100'000;
+        QTest::newRow("one closed curve, repeated") << u"M0,0 C1,2 3,4 5,6"_s.repeated(kRepeats);
+        QTest::newRow("one square, repeated") << u"M0 0h1v1h-1z"_s.repeated(kRepeats);
+        QTest::newRow("one loop, repeated") << u"M0,0 C1,2 3,4 5,6 C1,2 3,4 5,6"_s + u" C1,2 3,4 5,6"_s.repeated(kRepeats);
+        QTest::newRow("one triangle, repeated") << u"M0 0"_s + u" L10 0 L0 10 L0 0"_s.repeated(kRepeats) + u"z"_s;
+    }
+    void coincidentSegmentsRefusedQuickly()
+    {
+        QFETCH(QString, d);
+        // Small in the canvas, so that 100,000 copies stay within the vertex limit.
+        verifyOneLineError(importBody(u"<path id='p' d='%1'/>"_s.arg(d), 0.01, u"viewBox=\"0 0 1000 1000\""_s), u"shape \"p\" crosses itself"_s);
+    }
+
+    // 1,000 squares nested a millionth apart (400,000 vertices): every edge has a thousand others
+    // within a grid cell, and every contour lies inside the others' bounding boxes.
+    void nestedContoursImportInSeconds()
+    {
+        QString d;
+        for (int k = 0; k < 1000; ++k) {
+            const double lo = 0.1 + k * 1e-6, hi = 0.9 - k * 1e-6;
+            // Alternate ways round, as drawing tools write holes: nonzero and even-odd agree.
+            const QString path = k % 2 == 0 ? u"M%1 %1 H%2 V%2 H%1 Z "_s : u"M%1 %1 V%2 H%2 V%1 Z "_s;
+            d += path.arg(lo, 0, 'g', 17).arg(hi, 0, 'g', 17);
+        }
+        const SvgImport result = importBody(u"<path d='%1'/>"_s.arg(d), 0.01, u"viewBox=\"0 0 1 1\""_s);
+        QVERIFY2(result.ok(), qPrintable(result.error));
+        QCOMPARE(result.shapes.front().contours.size(), std::size_t(1000));
+        QVERIFY2(result.warnings.join(u'\n').contains(u"too many nested contours to tell"_s), qPrintable(result.warnings.join(u'\n')));
+    }
+
     void overlappingElementsAreSeparateShapes()
     {
         const SvgImport result = importBody(u"<rect width='60' height='60'/><rect x='30' y='30' width='60' height='60'/>"_s);

@@ -5,11 +5,59 @@
 #include <QTest>
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 using namespace vf;
 using sim::Polygon;
 using sim::Vec2;
+
+namespace {
+
+// The contact rule of isSimple, pair by pair and in plain arithmetic: exact for small whole
+// coordinates, and independent of the sweep and of orientation().
+double cross(Vec2 o, Vec2 a, Vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+bool onClosedSegment(Vec2 p, Vec2 a, Vec2 b)
+{
+    return cross(a, b, p) == 0.0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+           p.y <= std::max(a.y, b.y);
+}
+bool segmentsMeet(Vec2 a, Vec2 b, Vec2 c, Vec2 d)
+{
+    const double d1 = cross(a, b, c), d2 = cross(a, b, d), d3 = cross(c, d, a), d4 = cross(c, d, b);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+        return true;
+    return onClosedSegment(c, a, b) || onClosedSegment(d, a, b) || onClosedSegment(a, c, d) || onClosedSegment(b, c, d);
+}
+bool simpleByAllPairs(const std::vector<Polygon>& polygons)
+{
+    struct E { Vec2 a, b; std::size_t polygon, index, count; };
+    std::vector<E> edges;
+    for (std::size_t p = 0; p < polygons.size(); ++p)
+        for (std::size_t i = 0; i < polygons[p].size(); ++i)
+            edges.push_back({polygons[p][i], polygons[p][(i + 1) % polygons[p].size()], p, i, polygons[p].size()});
+    for (const E& e : edges)
+        if (e.a == e.b)
+            return false;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        for (std::size_t j = i + 1; j < edges.size(); ++j) {
+            const E &s = edges[i], &t = edges[j];
+            const bool follows = s.polygon == t.polygon && ((s.index + 1) % s.count == t.index || (t.index + 1) % t.count == s.index);
+            if (follows) {
+                const E& first = (s.index + 1) % s.count == t.index ? s : t;
+                const E& second = &first == &s ? t : s;
+                const Vec2 u = first.b - first.a, v = second.b - second.a;
+                if (s.count > 3 && cross(first.a, first.b, second.b) == 0.0 && u.x * v.x + u.y * v.y < 0.0)
+                    return false;  // folds back
+            } else if (segmentsMeet(s.a, s.b, t.a, t.b)) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+} // namespace
 
 class TestCrossings : public QObject {
     Q_OBJECT
@@ -84,6 +132,56 @@ private slots:
 
     // Many fine, nearly parallel polygons 1e-9 apart (a bundle of thin filaments): none crosses,
     // then one vertex pushed across its neighbour is found, whatever the grid's cell size.
+    // The sweep against every pair, on polygons with vertices on a 5×5 lattice: touching vertices,
+    // collinear overlaps, vertical edges and shared corners by the thousand.
+    void simpleAgreesWithAllPairs()
+    {
+        std::uint32_t state = 12345;
+        const auto next = [&state](std::uint32_t n) {
+            state = state * 1664525u + 1013904223u;
+            return (state >> 8) % n;
+        };
+        int simple = 0;
+        for (int trial = 0; trial < 20000; ++trial) {
+            std::vector<Polygon> polygons(1 + next(3));
+            for (Polygon& polygon : polygons) {
+                polygon.resize(3 + next(5));
+                for (Vec2& v : polygon)
+                    v = Vec2(double(next(5)), double(next(5)));
+            }
+            std::vector<const Polygon*> pointers;
+            for (const Polygon& polygon : polygons)
+                pointers.push_back(&polygon);
+            const bool expected = simpleByAllPairs(polygons);
+            QVERIFY2(sim::isSimple(pointers) == expected, qPrintable(QStringLiteral("trial %1").arg(trial)));
+            simple += expected ? 1 : 0;
+        }
+        QVERIFY2(simple > 1000, qPrintable(QStringLiteral("only %1 simple cases").arg(simple)));
+    }
+
+    // Edges lying close together by the thousand share every cell of a grid; the sweep meets
+    // each only beside its neighbours along the line (tests/sim/CMakeLists.txt gives a time limit).
+    void nestedSquaresAreSimple()
+    {
+        constexpr int kSquares = 1000, kPerSide = 250;
+        std::vector<Polygon> squares(kSquares);
+        std::vector<const Polygon*> pointers;
+        for (int k = 0; k < kSquares; ++k) {
+            const double lo = k * 1e-6, hi = 1.0 - k * 1e-6;
+            for (int side = 0; side < 4; ++side) {
+                for (int i = 0; i < kPerSide; ++i) {
+                    const double f = lo + (hi - lo) * i / kPerSide;
+                    const Vec2 corners[4] = {{f, lo}, {hi, f}, {hi + lo - f, hi}, {lo, hi + lo - f}};
+                    squares[k].push_back(corners[side]);
+                }
+            }
+            pointers.push_back(&squares[k]);
+        }
+        QVERIFY(sim::isSimple(pointers));
+        squares.back()[kPerSide / 2].y -= 2e-6;  // the innermost square's bottom pokes through the next one's
+        QVERIFY(!sim::isSimple(pointers));
+    }
+
     void thinFilamentsAndOneCrossing()
     {
         std::vector<Polygon> strands;
