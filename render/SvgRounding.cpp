@@ -62,7 +62,9 @@ RoundedRegion roundedRegion(const model::DrawnRegion& region, double step)
     std::vector<const sim::Polygon*> contours;
     for (const sim::Polygon& contour : out.region.contours)
         contours.push_back(&contour);
-    if (!sim::findCrossings(contours, 1).empty())
+    // The sweep line (n log n whatever the layout) and stricter than needed: contours that touch
+    // after rounding keep their full precision too.
+    if (!sim::isSimple(contours))
         return {region, true};
     return out;
 }

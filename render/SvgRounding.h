@@ -13,14 +13,14 @@ double svgCoordinateStep(const model::Drawing& drawing);
 
 struct RoundedRegion {
     model::DrawnRegion region;
-    bool exact = false;  // rounding would have made a crossing: `region` is the input, unrounded
+    bool exact = false;  // the rounded contours would cross or touch: `region` is the input, unrounded
 };
 
 // Every vertex moved to the nearest multiple of `step` (the double nearest the decimal, so its
 // shortest text has no more digits than the step needs), a vertex equal to its predecessor dropped
 // (the last one too when it equals the first), a contour left with fewer than three vertices
-// dropped. If the rounded contours have a proper crossing (sim::findCrossings, exact), the region
-// is returned as it was, with `exact` set.
+// dropped. If the rounded contours cross or touch anywhere (sim::isSimple, exact), the region is
+// returned as it was, with `exact` set.
 RoundedRegion roundedRegion(const model::DrawnRegion& region, double step);
 
 } // namespace vf::render
