@@ -9,6 +9,6 @@ namespace vf::app {
 // Puts the drawing's SVG (default export options: Bézier curves, background) on the clipboard as
 // "image/svg+xml" and, for editors that only take text, as text/plain. Needs a QGuiApplication.
 // Returns an empty string, or one line saying why nothing was copied.
-QString copyAsSvg(const model::Drawing& drawing);
+[[nodiscard]] QString copyAsSvg(const model::Drawing& drawing);
 
 } // namespace vf::app

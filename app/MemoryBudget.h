@@ -14,6 +14,6 @@ namespace vf::app {
 double availableMemory();
 
 // An empty string, or one line naming each part of the estimate, its limit and the total.
-QString checkMemory(const model::Scene& scene, const RenderOptions& options, double available);
+[[nodiscard]] QString checkMemory(const model::Scene& scene, const RenderOptions& options, double available);
 
 } // namespace vf::app

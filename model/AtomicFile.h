@@ -20,7 +20,7 @@ using FileContent = std::function<QString(QIODevice&)>;
 // file would replace the old one, so every write must reach the disk while its result can still
 // be checked.
 // Returns an empty string, or one line "path: what went wrong".
-QString saveAtomically(const QString& path, const FileContent& write);
+[[nodiscard]] QString saveAtomically(const QString& path, const FileContent& write);
 
 // Several files put in place together: each is written into its temporary by write(), and only
 // commit() renames them, one after the other, over their targets. Temporaries not committed are
@@ -34,8 +34,8 @@ public:
     FileBatch& operator=(const FileBatch&) = delete;
 
     // Returns an empty string, or one line "path: what went wrong" (the batch is then unusable).
-    QString write(const QString& path, const FileContent& content);
-    QString commit();
+    [[nodiscard]] QString write(const QString& path, const FileContent& content);
+    [[nodiscard]] QString commit();
 
 private:
     std::vector<std::unique_ptr<QSaveFile>> m_files;
@@ -46,7 +46,7 @@ private:
 QString checkWritable(const QString& path);
 
 // Writes all of `bytes`, or says why not.
-QString writeAll(QIODevice& device, const QByteArray& bytes);
-QString writeAll(QIODevice& device, const char* data, qint64 size);
+[[nodiscard]] QString writeAll(QIODevice& device, const QByteArray& bytes);
+[[nodiscard]] QString writeAll(QIODevice& device, const char* data, qint64 size);
 
 } // namespace vf::model

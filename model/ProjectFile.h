@@ -24,10 +24,10 @@ QByteArray projectToBytes(const Project& project);
 // Atomic (model/AtomicFile.h): the previous file survives any failure, including a project that
 // could not be read back (a NaN in a state, a duplicate region name). Returns an error line or
 // empty.
-QString writeProjectFile(const Project& project, const QString& path);
+[[nodiscard]] QString writeProjectFile(const Project& project, const QString& path);
 
 // What a project must satisfy to be written, the same rules the reader applies: an empty string,
 // or "key path: what is wrong" with the manifest's key paths ("history[2].after: contour 0 …").
-QString checkProject(const Project& project);
+[[nodiscard]] QString checkProject(const Project& project);
 
 } // namespace vf::model

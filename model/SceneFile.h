@@ -21,6 +21,6 @@ SceneReadResult parseScene(const QByteArray& json, const QString& sourceName, co
 
 QByteArray sceneToJson(const Scene& scene);
 // Atomic (QSaveFile): the previous file survives any failure. Returns an error line or empty.
-QString writeSceneFile(const Scene& scene, const QString& path);
+[[nodiscard]] QString writeSceneFile(const Scene& scene, const QString& path);
 
 } // namespace vf::model

@@ -28,7 +28,7 @@ public:
     std::uint64_t size() const { return m_size + m_buffer.size(); }
 
     // Writes what is buffered; returns an empty string or what went wrong.
-    QString finish();
+    [[nodiscard]] QString finish();
 
 private:
     void flushIfFull();

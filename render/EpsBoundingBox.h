@@ -20,7 +20,7 @@ public:
 
     // Passes on an unterminated last line, if any; returns an empty string or what went wrong,
     // including a document that does not end with its %%EOF trailer.
-    QString finish();
+    [[nodiscard]] QString finish();
     // What went wrong writing so far, or an empty string.
     const QString& error() const { return m_error; }
 

@@ -18,9 +18,9 @@ struct ExportOptions {
 
 // Writes `drawing` to `path` (.svg .pdf .eps .png), atomically: a temporary file renamed into
 // place only when complete. Returns an empty string, or one line saying what went wrong.
-QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options);
+[[nodiscard]] QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options);
 // The same into `batch`: the file is put in place only when the batch commits.
-QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options,
+[[nodiscard]] QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options,
                       model::FileBatch& batch);
 
 bool isExportSuffix(const QString& path);

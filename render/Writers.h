@@ -10,9 +10,9 @@
 
 namespace vf::render {
 
-QString writeSvg(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
-QString writePdf(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
-QString writeEps(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
-QString writePng(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+[[nodiscard]] QString writeSvg(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+[[nodiscard]] QString writePdf(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+[[nodiscard]] QString writeEps(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+[[nodiscard]] QString writePng(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
 
 } // namespace vf::render
