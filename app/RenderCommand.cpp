@@ -79,13 +79,20 @@ QString framePath(const QString& dir, qint64 step, qint64 lastStep)
     return QDir(dir).filePath(QStringLiteral("frame-%1.svg").arg(step, digits, 10, QLatin1Char('0')));
 }
 
-// Fails before any simulation when an output could not be written at the end: every file is
-// tried (a temporary created and removed beside it), so a read-only folder or file is found now.
-QString checkOutputs(const RenderOptions& options, qint64 steps)
+// The files written at the end: the pictures and the stats.
+QStringList finalFiles(const RenderOptions& options)
 {
     QStringList files = options.outputs;
     if (!options.statsFile.isEmpty())
         files << options.statsFile;
+    return files;
+}
+
+// Fails before any simulation when an output could not be written at the end: every file is
+// tried (a temporary created and removed beside it), so a read-only folder or file is found now.
+QString checkOutputs(const RenderOptions& options, qint64 steps)
+{
+    QStringList files = finalFiles(options);
     for (const QString& file : files) {
         const QFileInfo info(file);
         if (!info.absoluteDir().exists())
@@ -108,9 +115,7 @@ QString checkOutputs(const RenderOptions& options, qint64 steps)
 QString checkInputsKept(const model::Scene& scene, const RenderOptions& options)
 {
     const QDir sceneFolder = QFileInfo(options.scene).absoluteDir();
-    QStringList files = options.outputs;
-    if (!options.statsFile.isEmpty())
-        files << options.statsFile;
+    const QStringList files = finalFiles(options);
     for (std::size_t i = 0; i < scene.regions.size(); ++i) {
         const auto* svg = std::get_if<model::SvgShape>(&scene.regions[i].shape);
         if (!svg)

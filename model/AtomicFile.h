@@ -43,7 +43,7 @@ private:
 
 // Whether `path` could be written: creates and removes a temporary beside it. Returns an empty
 // string, or one line "path: cannot write: why".
-QString checkWritable(const QString& path);
+[[nodiscard]] QString checkWritable(const QString& path);
 
 // Writes all of `bytes`, or says why not.
 [[nodiscard]] QString writeAll(QIODevice& device, const QByteArray& bytes);
