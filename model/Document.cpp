@@ -24,9 +24,9 @@ QString unusedNameIn(const RegionTable& table, const QString& base)
             return name;
 }
 
-const CommandRecord& recordAt(const QUndoStack& stack, int i)
+const std::shared_ptr<CommandRecord>& recordAt(const QUndoStack& stack, int i)
 {
-    return *static_cast<const DocumentCommand*>(stack.command(i))->record();
+    return static_cast<const DocumentCommand*>(stack.command(i))->record();
 }
 
 } // namespace
@@ -128,7 +128,7 @@ ProjectDraft Document::draftProject()
     draft.m_steps = m_steps;
     draft.m_index = m_undo.index();
     for (int i = 0; i < m_undo.count(); ++i) {
-        CommandRecord r = recordAt(m_undo, i);
+        CommandRecord r = *recordAt(m_undo, i);
         if (r.isOpen()) {  // the newest command, still running, ends now
             r.after = draft.m_now;
             r.regionsAfter = m_regions;
@@ -260,7 +260,7 @@ CommandRecord* Document::openCommand()
 {
     if (m_undo.index() == 0)
         return nullptr;
-    CommandRecord* top = static_cast<const DocumentCommand*>(m_undo.command(m_undo.index() - 1))->record().get();
+    CommandRecord* top = recordAt(m_undo, m_undo.index() - 1).get();
     return top->isOpen() ? top : nullptr;
 }
 
@@ -285,7 +285,8 @@ StateSlotPtr Document::stateNow()
     return slot;
 }
 
-void Document::pushSimulationCommand(const QString& text, const std::function<void()>& action)
+std::shared_ptr<const CommandRecord> Document::pushSimulationCommand(const QString& text,
+                                                                   const std::function<void()>& action)
 {
     auto record = std::make_shared<CommandRecord>();
     record->text = text;
@@ -293,8 +294,9 @@ void Document::pushSimulationCommand(const QString& text, const std::function<vo
     record->regionsBefore = m_regions;
     record->settingsBefore = m_settings;
     action();
-    m_undo.push(new DocumentCommand(*this, std::move(record), true));
+    m_undo.push(new DocumentCommand(*this, record, true));
     enforceHistoryBudget();
+    return record;
 }
 
 void Document::pushRegionsCommand(const QString& text, RegionTable after)
@@ -359,8 +361,7 @@ void Document::drop(sim::Vec2 center, double radius, const QColor& color)
 
 void Document::beginStroke()
 {
-    pushSimulationCommand(tr("Stylus stroke"), [] {});
-    m_stroke = static_cast<const DocumentCommand*>(m_undo.command(m_undo.index() - 1))->record();
+    m_stroke = pushSimulationCommand(tr("Stylus stroke"), [] {});
 }
 
 void Document::stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
@@ -398,8 +399,7 @@ void Document::setSettings(const EngineSettings& settings, const QString& contro
         apply();  // the open command's end, taken when it closes, holds these settings
         return;
     }
-    pushSimulationCommand(tr("Simulation settings"), apply);
-    m_settingsCommand = static_cast<const DocumentCommand*>(m_undo.command(m_undo.index() - 1))->record();
+    m_settingsCommand = pushSimulationCommand(tr("Simulation settings"), apply);
     m_settingsControl = control;
 }
 
@@ -501,7 +501,7 @@ std::size_t Document::historyBytes(int first) const
     std::unordered_set<const sim::SimulationState*> counted;
     std::size_t bytes = 0;
     for (int i = first; i < m_undo.count(); ++i) {
-        const CommandRecord& r = recordAt(m_undo, i);
+        const CommandRecord& r = *recordAt(m_undo, i);
         for (const StateSlotPtr& slot : {r.before, r.after})
             if (StatePtr state = slot ? slot->state() : nullptr; state && counted.insert(state.get()).second)
                 bytes += state->bytes();
@@ -527,7 +527,7 @@ void Document::enforceHistoryBudget()
         return;
     std::vector<std::shared_ptr<CommandRecord>> records;
     for (int i = drop; i < m_undo.count(); ++i)
-        records.push_back(static_cast<const DocumentCommand*>(m_undo.command(i))->record());
+        records.push_back(recordAt(m_undo, i));
     const int clean = m_undo.cleanIndex();
     rebuildHistory(std::move(records), m_undo.index() - drop,
                    clean >= drop ? std::optional<int>(clean - drop) : std::nullopt);

@@ -132,7 +132,9 @@ private:
     void open(const Scene& scene, const EngineSettings& settings, const RegionTable& regions, const StateSlotPtr& start);
     // The state now, closing the open command if there is one (its end is this state).
     StateSlotPtr stateNow();
-    void pushSimulationCommand(const QString& text, const std::function<void()>& action);
+    // Returns the record of the command pushed.
+    std::shared_ptr<const CommandRecord> pushSimulationCommand(const QString& text,
+                                                               const std::function<void()>& action);
     void pushRegionsCommand(const QString& text, RegionTable after);
     void replaceRegions(const RegionTable& regions);
     void applySettings(const EngineSettings& settings);
