@@ -220,12 +220,14 @@ private slots:
         }
         QVERIFY2(canvas.grab().toImage().pixelColor(onTrail) != water, "the trail shows behind the pen");
         QTRY_VERIFY2(w.simulation().frame()->steps > stepsBefore, "the water runs while the pen is down");
+        // A slow build (sanitisers) may have stepped only once by now; the water keeps running
+        // while the pen rests, so wait for the ink to show the stroke rather than racing the worker.
+        QTRY_VERIFY2(largestMove(before, geometry(w)) > 0.001, "the ink moved without Play");
         QVERIFY(!play->isChecked());
         QTest::mouseRelease(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({0.65, 0.5}).toPoint(), 20);
 
         QCOMPARE(canvas.grab().toImage().pixelColor(onTrail), water);  // the trail goes with the pen
         const Geometry atRelease = geometry(w);
-        QVERIFY2(largestMove(before, atRelease) > 0.001, "the ink moved without Play");
         const std::int64_t stepsAtRelease = w.simulation().frame()->steps;
         QTest::qWait(100);
         QVERIFY(geometry(w) == atRelease);
