@@ -311,6 +311,7 @@ void MainWindow::createStatusBar()
         QLabel*& label;
         QString widest;
     } labels[] = {
+        {m_timeLabel, tr("%1 s").arg(99999.99, 0, 'f', 2)},
         {m_verticesLabel, tr("%L1 vertices").arg(99'999'999)},
         {m_stepsLabel, tr("%1 steps/s").arg(9999.9, 0, 'f', 1)},
         {m_fpsLabel, tr("%1 fps").arg(999)},
@@ -322,6 +323,7 @@ void MainWindow::createStatusBar()
         l.label->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         statusBar()->addPermanentWidget(l.label);
     }
+    m_timeLabel->setObjectName(QStringLiteral("simulatedTime"));
     connect(m_canvas, &Canvas::displayFpsChanged, this, [this](int fps) { m_fpsLabel->setText(tr("%1 fps").arg(fps)); });
 }
 
@@ -378,6 +380,7 @@ void MainWindow::showFrame()
     const auto frame = m_simulation.frame();
     m_document.takeFrame(*frame);
     m_canvas->setFrame(frame);
+    m_timeLabel->setText(tr("%1 s").arg(frame->time, 0, 'f', 2));
     m_verticesLabel->setText(tr("%L1 vertices").arg(qulonglong(frame->vertexCount)));
     m_stepsLabel->setText(frame->playing ? tr("%1 steps/s").arg(frame->stepsPerSecond, 0, 'f', 1) : tr("paused"));
     m_backendLabel->setText(QString::fromStdString(frame->backend));

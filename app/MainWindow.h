@@ -109,6 +109,7 @@ private:
     QAction* m_playAction = nullptr;
     QAction* m_marblingAction = nullptr;
     QAction* m_shapeDesignAction = nullptr;
+    QLabel* m_timeLabel = nullptr;
     QLabel* m_verticesLabel = nullptr;
     QLabel* m_stepsLabel = nullptr;
     QLabel* m_fpsLabel = nullptr;

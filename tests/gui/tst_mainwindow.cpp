@@ -235,6 +235,17 @@ private slots:
         QVERIFY(!play->isChecked());
     }
 
+    // The status bar gives the simulated time: a single step (the . key) advances it by one dt.
+    void statusBarShowsTheSimulatedTime()
+    {
+        MainWindow& w = *m_window;
+        const QLabel* time = test::child<QLabel>(w, "simulatedTime");
+        w.document().openScene(smallScene(), QStringLiteral("reference"));  // dt 0.01
+        QTRY_COMPARE(time->text(), QStringLiteral("0.00 s"));
+        QTest::keyClick(&w, Qt::Key_Period);
+        QTRY_COMPARE(time->text(), QStringLiteral("0.01 s"));
+    }
+
     void velocityOverlayGetsTheField()
     {
         MainWindow& w = *m_window;
