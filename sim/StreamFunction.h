@@ -16,17 +16,25 @@
 // ψ(i, 0) − ψ(i − 1, 0) = −v(i − ½, 0)·hx; then u = ∂ψ/∂y, v = −∂ψ/∂x at every face (to the
 // projection's tolerance; ψ takes one value along the top wall, so nothing flows through it). ψ is extended one corner past each wall by odd reflection about its wall
 // value, ψ(−k) = 2ψ(0) − ψ(k), so the spline keeps ψ constant along the wall (no flow through it)
-// with zero second normal derivative (free slip, as the solver's walls). A point outside the
-// canvas takes the mirror image of the flow inside (reflected position, normal component
-// negated), which continues it smoothly across the wall.
+// with zero second normal derivative (free slip, as the solver's walls). Outside the canvas the
+// stream function is that odd reflection damped to the walls' value, ψ̃ = φ·ψ with
+// φ = m(o_x/b_x)·m(o_y/b_y), o the distance outside along each axis, b two cells, and
+// m(s) = 1 − (6s⁵ − 15s⁴ + 10s³) falling from 1 at the wall to 0 at s = 1, its first two
+// derivatives zero at both ends. So the flow continues smoothly (C¹) across the wall, stays
+// divergence-free, and stops two cells out. Ink outside the canvas never comes back in (no flow
+// crosses a wall) and is never seen; drops push it there. Left moving, it was squeezed against the
+// walls' extensions into layers thinner than a float resolves, and crossed; at rest it costs
+// nothing. The vorticity outside is the damped reflection's, φ·ω (it only sets spacing).
 #include "sim/FluidSolver.h"
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
 namespace vf::sim {
 
 struct StreamField {
+    static constexpr double dampingCells = 2.0;  // the band b outside the walls, in cells
     int nx = 0, ny = 0;
     double hx = 1.0, hy = 1.0;
     std::vector<double> psi;  // (nx + 3) × (ny + 3), row-major: corner (i, j) at (j + 1)(nx + 3) + i + 1
@@ -36,6 +44,12 @@ struct StreamField {
     static StreamField average(const StreamField& a, const StreamField& b);
 
     Vec2 velocity(Vec2 p) const;
+    // φ of the damping outside the canvas and its gradient (1 and 0 inside).
+    struct Damping {
+        double factor = 1.0;
+        Vec2 gradient{0.0};
+    };
+    Damping dampingAt(Vec2 p) const;
     // ∂v/∂x − ∂u/∂y = −∇²ψ (eq. 5's vorticity), continuous.
     double vorticity(Vec2 p) const;
 
@@ -109,18 +123,50 @@ inline std::pair<double, double> StreamField::Stencil::sums(const double (&wxA)[
     return {a, b};
 }
 
+namespace detail {
+
+// m(o / band) of the damping and its derivative along the axis, for a coordinate g in [0, extent]
+// inside.
+inline std::pair<double, double> dampingAlong(double g, double extent, double band)
+{
+    const double outside = g < 0.0 ? -g : g - extent;
+    if (!(outside > 0.0))
+        return {1.0, 0.0};
+    const double s = std::min(outside / band, 1.0);
+    const double m = 1.0 - s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
+    const double slope = -30.0 * s * s * (1.0 - s) * (1.0 - s) / band;  // dm/d(outside)
+    return {m, g < 0.0 ? -slope : slope};
+}
+
+} // namespace detail
+
+inline StreamField::Damping StreamField::dampingAt(Vec2 p) const
+{
+    const auto [mx, dmx] = detail::dampingAlong(p.x, nx * hx, dampingCells * hx);
+    const auto [my, dmy] = detail::dampingAlong(p.y, ny * hy, dampingCells * hy);
+    return {mx * my, {dmx * my, mx * dmy}};
+}
+
 inline Vec2 StreamField::velocity(Vec2 p) const
 {
+    const Damping damping = dampingAt(p);
+    if (damping.factor == 0.0)
+        return Vec2(0.0);
     const Stencil s = stencilAt(p);
     const auto [dPsiDy, dPsiDx] = s.sums(s.x.w, s.y.dw, s.x.dw, s.y.w);
-    return {s.flipX * dPsiDy / hy, -s.flipY * dPsiDx / hx};
+    const Vec2 mirrored(s.flipX * dPsiDy / hy, -s.flipY * dPsiDx / hx);
+    if (damping.factor == 1.0)
+        return mirrored;
+    // curl(φ·ψ) = φ·curl ψ + ψ·(∂φ/∂y, −∂φ/∂x), ψ the reflection's value here.
+    const double psi = s.flipX * s.flipY * s.sums(s.x.w, s.y.w, s.x.w, s.y.w).first;
+    return damping.factor * mirrored + psi * Vec2(damping.gradient.y, -damping.gradient.x);
 }
 
 inline double StreamField::vorticity(Vec2 p) const
 {
     const Stencil s = stencilAt(p);
     const auto [psiXX, psiYY] = s.sums(s.x.ddw, s.y.w, s.x.w, s.y.ddw);
-    return -s.flipX * s.flipY * (psiXX / (hx * hx) + psiYY / (hy * hy));
+    return -dampingAt(p).factor * s.flipX * s.flipY * (psiXX / (hx * hx) + psiYY / (hy * hy));
 }
 
 } // namespace vf::sim

@@ -14,6 +14,7 @@ VF_INLINE int streamCorners(int nx, int ny) { return (nx + 3) * (ny + 3); }
 #define STREAM_START 0
 #define STREAM_HALFWAY 1
 #define STREAM_END 2
+#define STREAM_DAMPING_CELLS 2.0f  // StreamField::dampingCells
 
 // s clamped to [0, 1]; 1 (the end) when the span is empty, as FluidFlow::blend. RK4 (contours.cl)
 // passes its stages' s exactly (0, ½, 1), so its middle stages sample the halfway field alone.
@@ -24,9 +25,11 @@ VF_INLINE float streamBlend(float dt, float s)
 
 // The sampler is written once for a type T with integer type I: float and int for one point
 // (suffix Point), floatv and intv for lanes (suffix Lanes). `GATHER(f, k)` reads f[k] for each of
-// T's values. No float2 here: PoCL's loop vectoriser refuses them.
+// T's values; `ANY(c)` whether a comparison holds for any of them. No float2 here: PoCL's loop
+// vectoriser refuses them.
 #define VF_GATHER_ONE(f, k) (f)[k]
-#define VF_DEFINE_STREAM_SAMPLER(T, I, S, CONVERT_T, CONVERT_I, GATHER)                          \
+#define VF_ANY_ONE(c) (c)
+#define VF_DEFINE_STREAM_SAMPLER(T, I, S, CONVERT_T, CONVERT_I, GATHER, ANY)                     \
     /* detail::reflectInto: a lattice coordinate in [−n, 2n] reflected into [0, n], clamped     \
        beyond (NaN to 0: it fails `0 < g`); *sign is −1 where it was reflected. */              \
     VF_INLINE T streamReflect##S(T g, int n, T *sign)                                          \
@@ -38,12 +41,25 @@ VF_INLINE float streamBlend(float dt, float s)
         return fmin(select((T)(0.0f), g, isless((T)(0.0f), g)), (T)(n));                       \
     }                                                                                          \
                                                                                                \
+    /* detail::dampingAlong: m(o / band) outside the canvas along one axis, and *slope its      \
+       derivative along the axis (1 and 0 inside). */                                          \
+    VF_INLINE T streamDampingAlong##S(T g, float extent, float band, T *slope)                  \
+    {                                                                                          \
+        const I below = isless(g, (T)(0.0f));                                                  \
+        const T s = fmin(fmax(select(g - extent, -g, below) / band, (T)(0.0f)), (T)(1.0f));      \
+        const T dm = -30.0f * s * s * (1.0f - s) * (1.0f - s) / band;                          \
+        *slope = select(dm, -dm, below);                                                       \
+        return 1.0f - s * s * s * (10.0f - 15.0f * s + 6.0f * s * s);                          \
+    }                                                                                          \
+                                                                                               \
     /* The 4 × 4 corners around a point and the spline's weights there (StreamField::Stencil): \
-       w the B-spline, d its derivative, dd its second derivative, along x and along y. */     \
+       w the B-spline, d its derivative, dd its second derivative, along x and along y; and    \
+       StreamField::dampingAt, φ and its gradient. */                                          \
     typedef struct {                                                                           \
         I corner;                                                                              \
         T flipX, flipY;                                                                        \
         T wx[4], dx[4], ddx[4], wy[4], dy[4], ddy[4];                                           \
+        T damp, dampX, dampY;                                                                  \
     } StreamStencil##S;                                                                        \
                                                                                                \
     VF_INLINE void streamWeights##S(T t, T *w, T *d, T *dd)                                    \
@@ -72,6 +88,12 @@ VF_INLINE float streamBlend(float dt, float s)
         streamWeights##S(gx - CONVERT_T(i), s.wx, s.dx, s.ddx);                                \
         streamWeights##S(gy - CONVERT_T(j), s.wy, s.dy, s.ddy);                                \
         s.corner = j * streamStride(nx) + i;                                                   \
+        T slopeX, slopeY;                                                                      \
+        const T mx = streamDampingAlong##S(x, nx * hx, STREAM_DAMPING_CELLS * hx, &slopeX);    \
+        const T my = streamDampingAlong##S(y, ny * hy, STREAM_DAMPING_CELLS * hy, &slopeY);    \
+        s.damp = mx * my;                                                                      \
+        s.dampX = slopeX * my;                                                                 \
+        s.dampY = mx * slopeY;                                                                 \
         return s;                                                                              \
     }                                                                                          \
                                                                                                \
@@ -99,6 +121,14 @@ VF_INLINE float streamBlend(float dt, float s)
         streamSums##S(psi, nx, s, s.wx, s.dy, s.dx, s.wy, &dPsiDy, &dPsiDx);                   \
         *ux = s.flipX * dPsiDy / hy;                                                           \
         *uy = -s.flipY * dPsiDx / hx;                                                          \
+        if (ANY(isless(s.damp, (T)(1.0f)))) {                                                  \
+            /* curl(φ·ψ) = φ·curl ψ + ψ·(∂φ/∂y, −∂φ/∂x), ψ the reflection's value. */           \
+            T psiHere, unused;                                                                 \
+            streamSums##S(psi, nx, s, s.wx, s.wy, s.wx, s.wy, &psiHere, &unused);              \
+            psiHere *= s.flipX * s.flipY;                                                      \
+            *ux = s.damp * *ux + psiHere * s.dampY;                                            \
+            *uy = s.damp * *uy - psiHere * s.dampX;                                            \
+        }                                                                                      \
     }                                                                                          \
                                                                                                \
     /* StreamField::vorticity of the lattice at psi: −∇²ψ. */                                  \
@@ -107,7 +137,7 @@ VF_INLINE float streamBlend(float dt, float s)
     {                                                                                          \
         T psiXX, psiYY;                                                                        \
         streamSums##S(psi, nx, s, s.ddx, s.wy, s.wx, s.ddy, &psiXX, &psiYY);                   \
-        return -s.flipX * s.flipY * (psiXX / (hx * hx) + psiYY / (hy * hy));                   \
+        return -s.damp * s.flipX * s.flipY * (psiXX / (hx * hx) + psiYY / (hy * hy));          \
     }                                                                                          \
                                                                                                \
     /* The velocity at (x, y) `along` of the way through the step. RK4 asks at s = 0, ½, ½, 1, \
@@ -139,8 +169,8 @@ VF_INLINE float streamBlend(float dt, float s)
         return w0 + s * (w - w0);                                                              \
     }
 
-VF_DEFINE_STREAM_SAMPLER(float, int, Point, convert_float, convert_int, VF_GATHER_ONE)
-VF_DEFINE_STREAM_SAMPLER(floatv, intv, Lanes, VF_CONVERT_FLOATV, VF_CONVERT_INTV, gatherLanes)
+VF_DEFINE_STREAM_SAMPLER(float, int, Point, convert_float, convert_int, VF_GATHER_ONE, VF_ANY_ONE)
+VF_DEFINE_STREAM_SAMPLER(floatv, intv, Lanes, VF_CONVERT_FLOATV, VF_CONVERT_INTV, gatherLanes, any)
 
 VF_INLINE float2 flowVelocity(FLOW_PARAMS, float2 p, float s)
 {

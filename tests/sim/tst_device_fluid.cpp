@@ -250,7 +250,7 @@ void TestDeviceFluid::contoursMoveAlikeWithEitherFluid()
 
 // flowVelocity and flowVorticity of flow_fluid.cl against StreamField::velocity and ::vorticity of
 // the same float32 fields, blended in time as FluidFlow blends them: everywhere on the canvas,
-// outside it (mirrored) and at times before, inside and after the step, and with t1 == t0 (the
+// outside it (the damped mirror image) and at times before, inside and after the step, and with t1 == t0 (the
 // end field alone).
 void TestDeviceFluid::flowSamplingMatchesReference()
 {
