@@ -51,13 +51,13 @@ QString writeStats(const QString& path, const model::Drawing& drawing, const Run
     QJsonArray regions;
     for (const model::DrawnRegion& r : drawing.regions) {
         qint64 count = 0;
-        double area = 0.0, length = 0.0;
+        double length = 0.0;
         for (const sim::Polygon& p : r.contours) {
             count += qint64(p.size());
-            area += sim::signedArea(p);
             length += sim::perimeter(p);
         }
-        regions.append(QJsonObject{{"name", r.name}, {"vertices", count}, {"area", area}, {"perimeter", length}});
+        regions.append(QJsonObject{{"name", r.name}, {"vertices", count}, {"area", sim::filledArea(r.contours)},
+                                   {"perimeter", length}});
     }
     const QJsonObject root{
         {"backend", QString::fromStdString(simulation.backendName())},

@@ -1,5 +1,6 @@
 #include "sim/Geometry.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -43,6 +44,34 @@ int windingNumber(const Polygon& polygon, Vec2 p)
             --winding;
     }
     return winding;
+}
+
+double filledArea(const std::vector<Polygon>& contours)
+{
+    struct Box {
+        Vec2 low{INFINITY}, high{-INFINITY};
+        bool holds(Vec2 p) const { return p.x >= low.x && p.x <= high.x && p.y >= low.y && p.y <= high.y; }
+    };
+    std::vector<Box> boxes(contours.size());
+    for (std::size_t c = 0; c < contours.size(); ++c)
+        for (const Vec2& p : contours[c]) {
+            boxes[c].low = glm::min(boxes[c].low, p);
+            boxes[c].high = glm::max(boxes[c].high, p);
+        }
+    double area = 0.0;
+    for (std::size_t c = 0; c < contours.size(); ++c) {
+        if (contours[c].empty())
+            continue;
+        // Contours do not cross, so one vertex tells whether another contour encloses this one.
+        const Vec2 probe = contours[c].front();
+        int enclosing = 0;
+        for (std::size_t other = 0; other < contours.size(); ++other)
+            if (other != c && boxes[other].holds(probe) && windingNumber(contours[other], probe) != 0)
+                ++enclosing;
+        const double own = std::abs(signedArea(contours[c]));
+        area += enclosing % 2 == 0 ? own : -own;
+    }
+    return area;
 }
 
 Polygon resample(const Polygon& polygon, double maxSpacing)

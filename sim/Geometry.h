@@ -20,6 +20,11 @@ double perimeter(const Polygon& polygon);
 // How many times the polygon winds around p, counter-clockwise in raw coordinates positive.
 int windingNumber(const Polygon& polygon, Vec2 p);
 
+// The area the contours cover filled together with the even-odd rule, for contours that do not
+// cross (a region's): each contour's area counts positive when as many others enclose it as an
+// even number, negative when odd, so holes are subtracted.
+double filledArea(const std::vector<Polygon>& contours);
+
 // Splits every edge into equal pieces no longer than maxSpacing; the original vertices stay.
 Polygon resample(const Polygon& polygon, double maxSpacing);
 

@@ -169,11 +169,10 @@ QString compareStatsWithSvg(const QJsonObject& stats, const test::ParsedSvg& svg
     for (std::size_t i = 0; i < paths.size(); ++i) {
         const QJsonObject r = regions[qsizetype(i)].toObject();
         const std::vector<sim::Polygon> polygons = test::polygonsOf(*paths[i]);
-        double area = 0, length = 0;
-        for (const sim::Polygon& p : polygons) {
-            area += sim::signedArea(p);
+        const double area = sim::filledArea(polygons);
+        double length = 0;
+        for (const sim::Polygon& p : polygons)
             length += sim::perimeter(p);
-        }
         const double vertices = double(vertexCount(polygons));
         const double areaBound = kSvgStep * (length + vertices * kSvgStep), lengthBound = std::sqrt(2.0) * kSvgStep * vertices;
         if (r.value(QStringLiteral("name")).toString() != paths[i]->label

@@ -161,6 +161,18 @@ private slots:
 
     // Edges lying close together by the thousand share every cell of a grid; the sweep meets
     // each only beside its neighbours along the line (tests/sim/CMakeLists.txt gives a time limit).
+    // A ring with an island in its hole, and a disc apart: the hole is subtracted, the island added.
+    void filledAreaSubtractsHoles()
+    {
+        const Polygon outer = sim::circle({0.35, 0.5}, 0.3, 0.01), hole = sim::circle({0.35, 0.5}, 0.1, 0.01);
+        const Polygon island = sim::circle({0.36, 0.5}, 0.05, 0.01), apart = sim::circle({0.85, 0.5}, 0.1, 0.01);
+        const double expected = sim::signedArea(outer) - sim::signedArea(hole) + sim::signedArea(island)
+                              + sim::signedArea(apart);
+        QCOMPARE(sim::filledArea({hole, apart, island, outer}), expected);
+        QVERIFY(std::abs(expected - std::numbers::pi * (0.09 - 0.01 + 0.0025 + 0.01)) < 1e-3);
+        QCOMPARE(sim::filledArea({}), 0.0);
+    }
+
     void nestedSquaresAreSimple()
     {
         constexpr int kSquares = 1000, kPerSide = 250;
