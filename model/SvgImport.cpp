@@ -113,40 +113,23 @@ Outline rectOutline(Vec2 p, Vec2 size, Vec2 r)
 
 // Whether SVG's nonzero rule fills these non-crossing contours as the regions' even-odd rule does.
 // Just inside contour i, the winding number is the sum of the directions of i and of the contours
-// around it, and the even-odd count is one more than the number of contours around it.
-// Bounding boxes first: a shape of thousands of small contours (a halftone) would otherwise take a
-// winding number over every contour for every contour. Contours nested by the thousand pass every
-// box, so the vertices visited are counted, and past kNestingBudget the answer is nullopt: unknown
-// (only a warning depends on it).
+// around it, and the even-odd count is one more than the number of contours around it. Past
+// kNestingBudget vertices visited (sim::visitEnclosures) the answer is nullopt: unknown (only a
+// warning depends on it).
 constexpr std::size_t kNestingBudget = 100'000'000;
 
 std::optional<bool> nonzeroFillsEvenOdd(const std::vector<sim::Polygon>& contours, const std::vector<int>& directions)
 {
-    std::size_t visited = 0;
-    std::vector<std::pair<Vec2, Vec2>> boxes;
-    for (const sim::Polygon& contour : contours) {
-        const auto [left, right] = std::minmax_element(contour.begin(), contour.end(), [](Vec2 a, Vec2 b) { return a.x < b.x; });
-        const auto [bottom, top] = std::minmax_element(contour.begin(), contour.end(), [](Vec2 a, Vec2 b) { return a.y < b.y; });
-        boxes.emplace_back(Vec2(left->x, bottom->y), Vec2(right->x, top->y));
-    }
-    const auto inBox = [](const std::pair<Vec2, Vec2>& box, Vec2 p) {
-        return p.x >= box.first.x && p.x <= box.second.x && p.y >= box.first.y && p.y <= box.second.y;
-    };
-    for (std::size_t i = 0; i < contours.size(); ++i) {
-        int winding = directions[i], depth = 0;
-        for (std::size_t j = 0; j < contours.size(); ++j) {
-            if (j == i || !inBox(boxes[j], contours[i].front()))
-                continue;
-            if ((visited += contours[j].size()) > kNestingBudget)
-                return std::nullopt;
-            if (sim::windingNumber(contours[j], contours[i].front()) != 0) {
-                winding += directions[j];
-                ++depth;
-            }
-        }
-        if ((winding != 0) != (depth % 2 == 0))
+    std::vector<int> winding = directions, depth(contours.size(), 0);
+    const bool known = sim::visitEnclosures(contours, kNestingBudget, [&](std::size_t inner, std::size_t outer) {
+        winding[inner] += directions[outer];
+        ++depth[inner];
+    });
+    if (!known)
+        return std::nullopt;
+    for (std::size_t i = 0; i < contours.size(); ++i)
+        if ((winding[i] != 0) != (depth[i] % 2 == 0))
             return false;
-    }
     return true;
 }
 

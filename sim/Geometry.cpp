@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace vf::sim {
@@ -46,7 +47,8 @@ int windingNumber(const Polygon& polygon, Vec2 p)
     return winding;
 }
 
-double filledArea(const std::vector<Polygon>& contours)
+bool visitEnclosures(const std::vector<Polygon>& contours, std::size_t budget,
+                     const std::function<void(std::size_t inner, std::size_t outer)>& enclosedBy)
 {
     struct Box {
         Vec2 low{INFINITY}, high{-INFINITY};
@@ -58,18 +60,32 @@ double filledArea(const std::vector<Polygon>& contours)
             boxes[c].low = glm::min(boxes[c].low, p);
             boxes[c].high = glm::max(boxes[c].high, p);
         }
+    std::size_t visited = 0;
+    for (std::size_t inner = 0; inner < contours.size(); ++inner) {
+        if (contours[inner].empty())
+            continue;
+        const Vec2 probe = contours[inner].front();
+        for (std::size_t outer = 0; outer < contours.size(); ++outer) {
+            if (outer == inner || !boxes[outer].holds(probe))
+                continue;
+            if ((visited += contours[outer].size()) > budget)
+                return false;
+            if (windingNumber(contours[outer], probe) != 0)
+                enclosedBy(inner, outer);
+        }
+    }
+    return true;
+}
+
+double filledArea(const std::vector<Polygon>& contours)
+{
+    std::vector<int> enclosing(contours.size(), 0);
+    visitEnclosures(contours, std::numeric_limits<std::size_t>::max(),
+                    [&enclosing](std::size_t inner, std::size_t) { ++enclosing[inner]; });
     double area = 0.0;
     for (std::size_t c = 0; c < contours.size(); ++c) {
-        if (contours[c].empty())
-            continue;
-        // Contours do not cross, so one vertex tells whether another contour encloses this one.
-        const Vec2 probe = contours[c].front();
-        int enclosing = 0;
-        for (std::size_t other = 0; other < contours.size(); ++other)
-            if (other != c && boxes[other].holds(probe) && windingNumber(contours[other], probe) != 0)
-                ++enclosing;
         const double own = std::abs(signedArea(contours[c]));
-        area += enclosing % 2 == 0 ? own : -own;
+        area += enclosing[c] % 2 == 0 ? own : -own;
     }
     return area;
 }

@@ -3,6 +3,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace vf::sim {
@@ -19,6 +20,13 @@ double perimeter(const Polygon& polygon);
 
 // How many times the polygon winds around p, counter-clockwise in raw coordinates positive.
 int windingNumber(const Polygon& polygon, Vec2 p);
+
+// For contours that do not cross: calls enclosedBy(inner, outer) for every pair where contour
+// `outer` encloses contour `inner` (tested at inner's first vertex, bounding boxes first). Contours
+// nested by the thousand pass every box, so the vertices visited are counted: past `budget` it
+// stops and returns false.
+bool visitEnclosures(const std::vector<Polygon>& contours, std::size_t budget,
+                     const std::function<void(std::size_t inner, std::size_t outer)>& enclosedBy);
 
 // The area the contours cover filled together with the even-odd rule, for contours that do not
 // cross (a region's): each contour's area counts positive when as many others enclose it as an
