@@ -153,7 +153,7 @@ int run(const Arguments& a)
     if (!a.counts.empty())
         counts.open(a.counts);
     double seconds = 0.0;
-    std::int64_t vertexSteps = 0, substeps = 0, firstCrossing = -1;
+    std::int64_t vertexSteps = 0, substeps = 0, firstCrossing = -1, pinchesCut = 0;
     std::size_t peak = simulation.vertexCount();
     std::map<std::size_t, bool> known;
     bool limit = false;
@@ -164,6 +164,7 @@ int run(const Arguments& a)
         seconds += std::chrono::duration<double>(Clock::now() - start).count();
         limit = report.vertexLimitReached;
         substeps += report.substeps;
+        pinchesCut += std::int64_t(report.pinchesCut);
         vertexSteps += std::int64_t(simulation.vertexCount());
         peak = std::max(peak, simulation.vertexCount());
         if (counts.is_open())
@@ -180,12 +181,12 @@ int run(const Arguments& a)
     for (std::size_t p = 0; p < sim::phaseCount; ++p)
         phases << (p ? ", " : "") << '"' << sim::phaseNames[p] << "\": " << simulation.phaseSeconds()[p];
     std::printf("{\"session\": \"%s\", \"seed\": %u, \"backend\": \"%s\", \"area_correction\": %s, "
-                "\"steps\": %lld, \"substeps\": %lld, "
+                "\"steps\": %lld, \"substeps\": %lld, \"pinches_cut\": %lld, "
                 "\"seconds\": %.4f, \"vertex_steps\": %lld, \"vertex_steps_per_second\": %.1f, \"peak_vertices\": %zu, "
                 "\"end_vertices\": %zu, \"peak_rss_bytes\": %ld, \"limit_reached\": %s, \"phase_seconds\": {%s}, "
                 "\"phases_total\": %.4f, \"first_crossing_step\": %lld, \"worst_area_error\": %.3g}\n",
                 a.session.c_str(), a.seed, simulation.backendName().c_str(),
-                simulation.settings().tracking.areaCorrection ? "true" : "false", (long long)step, (long long)substeps,
+                simulation.settings().tracking.areaCorrection ? "true" : "false", (long long)step, (long long)substeps, (long long)pinchesCut,
                 seconds, (long long)vertexSteps, double(vertexSteps) / seconds, peak, simulation.vertexCount(),
                 peakRss, limit ? "true" : "false", phases.str().c_str(), phaseTotal,
                 (long long)firstCrossing, worstAreaError(simulation));

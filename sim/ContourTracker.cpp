@@ -2,6 +2,7 @@
 
 #include "sim/AreaCorrection.h"
 #include "sim/Crossings.h"
+#include "sim/Pinches.h"
 #include "sim/SpacingField.h"
 #include "sim/TightGrowth.h"
 
@@ -317,6 +318,17 @@ bool ContourTracker::advect(const Flow& flow, double t, double dt)
         }
     }
     return refineAll([&flow, t, dt](Vec2 p) { return rungeKutta4(flow, p, t, dt); }, flow, t + dt);
+}
+
+std::size_t ContourTracker::cutPinches()
+{
+    const std::size_t cuts = sim::cutPinches(m_contours);
+    if (cuts > 0) {
+        m_vertexCount = 0;
+        for (const Contour& c : m_contours)
+            m_vertexCount += c.positions.size();
+    }
+    return cuts;
 }
 
 bool ContourTracker::applyMotion(const MotionMap& map, const Flow& flow, double t)

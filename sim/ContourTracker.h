@@ -45,6 +45,9 @@ public:
     // an ink drop landing inside a contour makes it enclose the drop as well.
     void growTargetAreasAround(Vec2 p, double area);
 
+    // Cuts every contour where it pinches (sim/Pinches.h); returns how many cuts were made.
+    std::size_t cutPinches();
+
     // Replaces all contours (snapshot restore); counts are recomputed.
     void setContours(std::vector<Contour> contours);
 

@@ -9,10 +9,10 @@
 
 namespace vf::sim {
 
-enum class Phase { Fluid, Advect, Spacing, Proximity, Split, Collapse, Area };
-inline constexpr std::size_t phaseCount = 7;
-inline constexpr std::array<const char*, phaseCount> phaseNames{"fluid",    "advect",   "spacing", "proximity",
-                                                                "split",    "collapse", "area"};
+enum class Phase { Fluid, Advect, Spacing, Proximity, Split, Collapse, Area, Pinches };
+inline constexpr std::size_t phaseCount = 8;
+inline constexpr std::array<const char*, phaseCount> phaseNames{"fluid", "advect",   "spacing", "proximity",
+                                                                "split", "collapse", "area",    "pinches"};
 
 class PhaseClock {
 public:

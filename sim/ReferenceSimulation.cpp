@@ -2,6 +2,7 @@
 
 #include "sim/AnalyticFlow.h"
 #include "sim/FluidFlow.h"
+#include "sim/Pinches.h"
 
 #include <glm/geometric.hpp>
 
@@ -109,7 +110,7 @@ StepReport ReferenceSimulation::step(double dt)
         const PhaseClock::Scope timing(&m_phases, Phase::Advect);  // the strain samples the flow
         report.substeps = substepCount(m_tracker.strainInSpacings(*m_flow, time(), dt), m_settings.tracking);
     }
-    const double h = dt / report.substeps;
+    const double h = dt / report.substeps, start = time();
     for (int k = 0; k < report.substeps; ++k) {
         // Each substep gets its share of the pen's path, so the force follows the pen.
         for (const StylusSegment& s : m_pendingStylus) {
@@ -127,6 +128,10 @@ StepReport ReferenceSimulation::step(double dt)
         }
     }
     m_pendingStylus.clear();
+    if (pinchCheckDue(start, time())) {
+        const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
+        report.pinchesCut = m_tracker.cutPinches();
+    }
     return report;
 }
 

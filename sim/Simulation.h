@@ -27,6 +27,7 @@ struct SimulationSettings {
 struct StepReport {
     bool vertexLimitReached = false;  // refinement stopped at tracking.maxVertices
     int substeps = 1;
+    std::size_t pinchesCut = 0;  // contour surgery at the end of the step (sim/Pinches.h)
 };
 
 // Every region's contours at one moment, for a display (Simulation::requestRegions).

@@ -8,6 +8,7 @@
 #include "sim/opencl/DeviceContours.h"
 
 #include "sim/ContourTracker.h"
+#include "sim/Pinches.h"
 #include "sim/SpacingField.h"
 
 #include "sim/opencl/ContourCodes.h"
@@ -106,6 +107,15 @@ struct Outlines {
     bool taken = true;
 };
 
+// Enqueues a copy of `values` into `buffer` from element `first` on (nothing when there are none).
+template <class Values>
+void put(cl::CommandQueue& queue, const cl::Buffer& buffer, std::size_t first, const Values& values)
+{
+    if (!values.empty())
+        queue.enqueueWriteBuffer(buffer, CL_FALSE, first * sizeof(values[0]), values.size() * sizeof(values[0]),
+                                 values.data());
+}
+
 // True once the command is done; a command that failed is a device failure.
 bool isComplete(const cl::Event& event)
 {
@@ -182,6 +192,9 @@ struct DeviceContours::Impl {
     std::vector<Contour> toContours(const Snapshot& s) const;
     void enqueueOutlines(Outlines& s);
     void place(const std::vector<Contour>& contours, std::size_t firstVertex, std::size_t firstContour);
+    void putContours(std::size_t firstContour, const std::vector<cl_uint>& offset, const std::vector<cl_uint>& count,
+                     const std::vector<double>& areas);
+    std::size_t applyCuts(const std::vector<ContourCut>& cuts);
 
     Device& device;
     cl::CommandQueue& queue;
@@ -191,9 +204,9 @@ struct DeviceContours::Impl {
     const std::size_t accSize;
     const std::optional<std::size_t> vertexCap;  // VF_OPENCL_MAX_VERTICES
     Scan countScan, sumScan;
-    cl::Kernel advect, strain, positionsOf, arcTilesAndCount, gridScatter, nearestOtherPart, nearestBeyond, rawSpacing, smoothSpacing,
-        splitCount, splitScatter, recountContours, collapseDecide, collapseScatter, recentreInPlace,
-        contourTermTiles, contourTermSums, correctArea;
+    cl::Kernel advect, strain, positionsOf, gatherVertices, arcTilesAndCount, gridScatter, nearestOtherPart,
+        nearestBeyond, rawSpacing, smoothSpacing, splitCount, splitScatter, recountContours, collapseDecide,
+        collapseScatter, recentreInPlace, contourTermTiles, contourTermSums, correctArea;
 
     // Vertices: two sets (compaction scatters from one into the other, then they swap) and scratch.
     std::size_t capacity = 0, vertices = 0;
@@ -258,6 +271,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
     for (auto [kernel, name] : {std::pair{&advect, "advect"},
                                 {&strain, "strain"},
                                 {&positionsOf, "positionsOf"},
+                                {&gatherVertices, "gatherVertices"},
                                 {&arcTilesAndCount, "arcTilesAndCount"},
                                 {&gridScatter, "gridScatter"},
                                 {&nearestOtherPart, "nearestOtherPart"},
@@ -681,28 +695,87 @@ void DeviceContours::Impl::place(const std::vector<Contour>& contours, std::size
         }
         areas.push_back(c.targetArea);
     }
-    const std::vector<float> areaFloats(areas.begin(), areas.end());
-    const auto put = [this](const cl::Buffer& buffer, std::size_t first, const auto& values) {
-        if (!values.empty())
-            queue.enqueueWriteBuffer(buffer, CL_FALSE, first * sizeof(values[0]), values.size() * sizeof(values[0]),
-                                     values.data());
-    };
-    put(front.motion, firstVertex, motion);
-    put(front.spacing, firstVertex, spacing);
-    put(front.contour, firstVertex, contour);
-    put(contourOffset, firstContour, offset);
-    put(contourCount, firstContour, count);
-    if (fp64)
-        put(contourTarget, firstContour, areas);
-    else
-        put(contourTarget, firstContour, areaFloats);
+    put(queue, front.motion, firstVertex, motion);
+    put(queue, front.spacing, firstVertex, spacing);
+    put(queue, front.contour, firstVertex, contour);
+    putContours(firstContour, offset, count, areas);
     queue.finish();  // the host vectors above go out of scope
     regions.resize(firstContour);
-    targets.resize(firstContour);
     for (const Contour& c : contours)
         regions.push_back(c.region);
-    targets.insert(targets.end(), areas.begin(), areas.end());
     vertices = total;
+}
+
+// The contours' ranges and area targets from index `firstContour` on (the host's copy of the
+// targets too); the copies are enqueued, and the caller waits before the vectors go.
+void DeviceContours::Impl::putContours(std::size_t firstContour, const std::vector<cl_uint>& offset,
+                                       const std::vector<cl_uint>& count, const std::vector<double>& areas)
+{
+    put(queue, contourOffset, firstContour, offset);
+    put(queue, contourCount, firstContour, count);
+    targets.resize(firstContour);
+    targets.insert(targets.end(), areas.begin(), areas.end());
+    if (fp64) {
+        put(queue, contourTarget, firstContour, areas);
+    } else {
+        const std::vector<float> areaFloats(areas.begin(), areas.end());
+        put(queue, contourTarget, firstContour, areaFloats);
+        queue.finish();
+    }
+}
+
+// Contour surgery on the device (DeviceContours::cutPinches): every vertex kept is gathered, in its
+// new place, into the scratch vertex set, which becomes the front; the contours' ranges, regions and
+// targets are replaced.
+std::size_t DeviceContours::Impl::applyCuts(const std::vector<ContourCut>& cuts)
+{
+    const std::size_t contours = regions.size();
+    std::vector<cl_uint> offset(contours), count(contours);
+    queue.enqueueReadBuffer(contourOffset, CL_FALSE, 0, contours * sizeof(cl_uint), offset.data());
+    queue.enqueueReadBuffer(contourCount, CL_TRUE, 0, contours * sizeof(cl_uint), count.data());
+    std::vector<cl_uint> from, newContour, newOffset, newCount;  // per new vertex, per new contour
+    std::vector<int> newRegions;
+    std::vector<double> newTargets;
+    from.reserve(vertices);
+    newContour.reserve(vertices);
+    std::size_t made = 0;
+    const auto addContour = [&](int region, double target, const auto& vertexOf, std::size_t size) {
+        newOffset.push_back(cl_uint(from.size()));
+        newCount.push_back(cl_uint(size));
+        for (std::size_t i = 0; i < size; ++i) {
+            from.push_back(cl_uint(vertexOf(i)));
+            newContour.push_back(cl_uint(newRegions.size()));
+        }
+        newRegions.push_back(region);
+        newTargets.push_back(target);
+    };
+    auto cut = cuts.begin();
+    for (std::size_t k = 0; k < contours; ++k) {
+        if (cut == cuts.end() || cut->contour != k) {
+            addContour(regions[k], targets[k], [&](std::size_t i) { return offset[k] + i; }, count[k]);
+            continue;
+        }
+        const std::vector<double> shares = sharedTargets(targets[k], cut->kept);
+        for (std::size_t l = 0; l < cut->kept.size(); ++l) {
+            const std::vector<std::uint32_t>& loop = cut->kept[l].vertices;
+            addContour(regions[k], shares[l], [&](std::size_t i) { return offset[k] + loop[i]; }, loop.size());
+        }
+        made += cut->cuts;
+        ++cut;
+    }
+    reserveContours(newRegions.size());
+    const auto n = cl_uint(from.size());
+    put(queue, back.contour, 0, from);
+    put(queue, tileOffset, 0, newContour);
+    launch(queue, gatherVertices, n, front.motion, front.spacing, n, tileOffset, back.motion, back.spacing,
+           back.contour);
+    std::swap(front, back);
+    putContours(0, newOffset, newCount, newTargets);
+    queue.finish();  // the host vectors above go out of scope
+    regions = std::move(newRegions);
+    vertices = n;
+    strainSamplesKept = false;
+    return made;
 }
 
 DeviceContours::Impl::~Impl()
@@ -791,6 +864,30 @@ void DeviceContours::write(const std::vector<Contour>& contours)
         m->place(contours, 0, 0);
         for (Outlines& staged : m->staging)
             staged.taken = true;
+    });
+}
+
+std::size_t DeviceContours::cutPinches()
+{
+    return guarded([&] {
+        // The positions come back (8 bytes a vertex) for the search; the cuts are made on the device.
+        const std::vector<ContourCut> cuts = [&] {
+            std::vector<Vec2> positions;
+            std::vector<Outline> outlines;
+            {
+                Outlines s;
+                m->enqueueOutlines(s);
+                if (s.done())
+                    s.done.wait();
+                positions.resize(s.positions.size());
+                std::transform(s.positions.begin(), s.positions.end(), positions.begin(),
+                               [](const cl_float2& p) { return Vec2(p.s[0], p.s[1]); });
+                for (std::size_t c = 0; c < s.offset.size(); ++c)
+                    outlines.emplace_back(positions.data() + s.offset[c], s.count[c]);
+            }
+            return findCuts(outlines);
+        }();
+        return cuts.empty() ? 0 : m->applyCuts(cuts);
     });
 }
 

@@ -49,6 +49,10 @@ public:
     // vorticity term.
     bool drop(Vec2 center, double radius, const FlowBinding& flow);
 
+    // Contour surgery (sim/Pinches.h) on the host: the contours are read back, and written again
+    // when a cut was made. Returns how many cuts were made.
+    std::size_t cutPinches();
+
     std::size_t vertexCount() const;  // known on the host after every step (one scalar read)
 
     // Reads the geometry back (blocking). Positions widen to double; spacing as used last step.

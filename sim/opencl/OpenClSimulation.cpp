@@ -1,5 +1,6 @@
 #include "sim/opencl/OpenClSimulation.h"
 
+#include "sim/Pinches.h"
 #include "sim/opencl/AnalyticSource.h"
 #include "sim/opencl/KernelSources.h"
 
@@ -83,7 +84,7 @@ StepReport OpenClSimulation::step(double dt)
         report.substeps = substepCount(m_contours->strainInSpacings(binding(m_time, m_time), dt),
                                        m_settings.tracking);
     }
-    const double h = dt / report.substeps;
+    const double h = dt / report.substeps, start = m_time;
     for (int k = 0; k < report.substeps && !report.vertexLimitReached; ++k) {
         if (m_fluid) {
             for (const StylusSegment& s : m_pendingStylus) {
@@ -99,6 +100,10 @@ StepReport OpenClSimulation::step(double dt)
         m_time += h;
     }
     m_pendingStylus.clear();
+    if (pinchCheckDue(start, m_time)) {
+        const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
+        report.pinchesCut = m_contours->cutPinches();
+    }
     return report;
 }
 

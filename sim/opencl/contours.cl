@@ -240,6 +240,21 @@ VF_KERNEL void positionsOf(__global const float4 *motion, uint n, __global float
         positions[i] = motion[i].xy;
 }
 
+// Contour surgery's new layout (DeviceContours::cutPinches): new vertex i is old vertex
+// fromThenContour[i], of new contour newContour[i], which then replaces it.
+VF_KERNEL void gatherVertices(__global const float4 *motion, __global const float *spacing, uint n,
+                              __global const uint *newContour, __global float4 *toMotion, __global float *toSpacing,
+                              __global uint *fromThenContour)
+{
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const uint from = fromThenContour[i];
+    toMotion[i] = motion[from];
+    toSpacing[i] = spacing[from];
+    fromThenContour[i] = newContour[i];
+}
+
 VF_DEFINE_LOCAL_REDUCE(float, maxFloat, fmax)
 
 // Largest |u(v_b) − u(v_a)|·stepLength / d_e over the edges (ContourTracker::strainInSpacings),
