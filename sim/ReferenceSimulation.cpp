@@ -40,6 +40,11 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
     return m_regionCount++;
 }
 
+bool ReferenceSimulation::comb(const Comb& comb)
+{
+    return m_tracker.applyMotion(comb, *m_flow, time());
+}
+
 bool ReferenceSimulation::pushOutward(Vec2 center, double radius)
 {
     const double r2 = radius * radius;

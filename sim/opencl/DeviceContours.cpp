@@ -16,6 +16,8 @@
 #include "sim/opencl/Launch.h"
 #include "sim/opencl/Scan.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -37,17 +39,16 @@ constexpr std::size_t minCapacity = std::size_t(1) << 14;
 
 // MOTION_ARGS of contours.cl: how vertices move in this step, and where split vertices go.
 struct Motion {
-    cl_int kind = motionFlow;  // RK4 through the flow, or the drop's push
-    cl_float2 centre{{0.0f, 0.0f}};
-    cl_float radius = 0.0f;
-    cl_int rewind = 1;  // TrackingSettings::timeRewinding
+    cl_int kind = motionFlow;  // RK4 through the flow, the drop's push or a comb
+    cl_float4 a{}, b{};        // the map's parameters (contours.cl, MOTION_ARGS)
+    cl_int rewind = 1;         // TrackingSettings::timeRewinding
 };
 
 void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Motion& motion)
 {
     kernel.setArg(index++, motion.kind);
-    kernel.setArg(index++, motion.centre);
-    kernel.setArg(index++, motion.radius);
+    kernel.setArg(index++, motion.a);
+    kernel.setArg(index++, motion.b);
     kernel.setArg(index++, motion.rewind);
 }
 
@@ -166,7 +167,7 @@ struct DeviceContours::Impl {
     void reserveContours(std::size_t needed);
     std::size_t tiles() const { return roundUpToLocal(vertices + 1) / localSize; }
     Grid grid() const;
-    Motion flowMotion() const { return Motion{motionFlow, {{0.0f, 0.0f}}, 0.0f, cl_int(settings.timeRewinding)}; }
+    Motion flowMotion() const { return Motion{motionFlow, {}, {}, cl_int(settings.timeRewinding)}; }
 
     bool move(const FlowBinding& flow, const Motion& motion, bool startKnown = false);
     void computeSpacing(const FlowBinding& flow);
@@ -852,9 +853,24 @@ bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
     return guarded([&] {
         Motion push = m->flowMotion();
         push.kind = motionDrop;
-        push.centre = {{cl_float(center.x), cl_float(center.y)}};
-        push.radius = cl_float(radius);
+        push.a = {{cl_float(center.x), cl_float(center.y), cl_float(radius), 0.0f}};
         return m->move(flow, push);
+    });
+}
+
+bool DeviceContours::comb(const Comb& comb, const FlowBinding& flow)
+{
+    return guarded([&] {
+        const Vec2 stroke = comb.to - comb.from;
+        const double length = glm::length(stroke);
+        if (!(length > 0.0) || comb.tines < 1 || m->vertices == 0)
+            return true;
+        const Vec2 along = stroke / length;
+        Motion shear = m->flowMotion();
+        shear.kind = motionComb;
+        shear.a = {{cl_float(comb.from.x), cl_float(comb.from.y), cl_float(along.x), cl_float(along.y)}};
+        shear.b = {{cl_float(length), cl_float(comb.sharpness), cl_float(comb.spacing), cl_float(comb.tines)}};
+        return m->move(flow, shear);
     });
 }
 

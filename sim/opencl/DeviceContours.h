@@ -3,6 +3,7 @@
 // (eq. 1), adaptive spacing (eqs. 3–7) with a counting-sort proximity grid and Gaussian smoothing
 // along contours, refinement by the time-rewinding split (eq. 2) and collapse, kept contiguous
 // and ordered by stream compaction, the optional area correction, and ink drops.
+#include "sim/Comb.h"
 #include "sim/Simulation.h"
 #include "sim/Tracking.h"
 #include "sim/opencl/Device.h"
@@ -52,6 +53,9 @@ public:
     // Contour surgery (sim/Pinches.h) on the host: the contours are read back, and written again
     // when a cut was made. Returns how many cuts were made.
     std::size_t cutPinches();
+
+    // The comb's exact map (sim/Comb.h) as the motion, then refinement, as drop().
+    bool comb(const Comb& comb, const FlowBinding& flow);
 
     std::size_t vertexCount() const;  // known on the host after every step (one scalar read)
 

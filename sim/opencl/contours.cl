@@ -18,12 +18,14 @@ typedef VF_ACC4 acc4;
 #define CONTOUR_ARGS                                                                           \
     __global const uint *contourOf, __global const uint *contourOffset, __global const uint *contourCount
 
-// How vertices move in this step: through the flow from t0 to t1 (RK4, motionKind MOTION_FLOW), or
-// by an ink drop's push (MOTION_DROP). `rewind` is TrackingSettings::timeRewinding: where a split
-// vertex goes (eq. 2 or the chord). MOTION_*, STATUS_*, FLAG_* and TERMS_* are defined by the host
-// as build options (DeviceContours.cpp, sharedDefinitions).
-#define MOTION_ARGS int motionKind, float2 dropCentre, float dropRadius, int rewind
-#define MOTION_PASS motionKind, dropCentre, dropRadius, rewind
+// How vertices move in this step: through the flow from t0 to t1 (RK4, motionKind MOTION_FLOW), by
+// an ink drop's push (MOTION_DROP: mapA is the centre and the radius) or by a comb (MOTION_COMB:
+// mapA is `from` and the unit direction M, mapB the length z, the sharpness, the spacing and the
+// tine count; sim/Comb.h). `rewind` is TrackingSettings::timeRewinding: where a split vertex goes
+// (eq. 2 or the chord). MOTION_*, STATUS_*, FLAG_* and TERMS_* are defined by the host as build
+// options (ContourCodes.h).
+#define MOTION_ARGS int motionKind, float4 mapA, float4 mapB, int rewind
+#define MOTION_PASS motionKind, mapA, mapB, rewind
 
 // Words of the status buffer the host reads once per pass. Flags are raised with atomic_or, the
 // strain with atomic_max on the bits of a non-negative float: both results are independent of the
@@ -102,10 +104,29 @@ VF_INLINE float2 dropPush(float2 centre, float radius, float2 p)
     return centre + d * sqrt(1.0f + radius * radius / l2);
 }
 
+// The comb's shear along M (sim/Comb.cpp): z·u/(d + u) for each tine, d the distance to its line.
+VF_INLINE float2 combShift(float4 line, float4 shape, float2 p)
+{
+    const float2 from = line.xy, along = line.zw, across = (float2)(-along.y, along.x);
+    const int tines = (int)shape.w;
+    float shift = 0.0f;
+    for (int k = 0; k < tines; ++k) {
+        const float2 tine = from + ((float)k - 0.5f * (float)(tines - 1)) * shape.z * across;
+        shift += shape.x * shape.y / (fabs(dot(p - tine, across)) + shape.y);
+    }
+    return p + shift * along;
+}
+
+// Where a map (a drop or a comb, not the flow) takes `start`.
+VF_INLINE float2 mapped(MOTION_ARGS, float2 start)
+{
+    return motionKind == MOTION_DROP ? dropPush(mapA.xy, mapA.z, start) : combShift(mapA, mapB, start);
+}
+
 // Where a point that sat at `start` when the motion began is now.
 VF_INLINE float2 moved(FLOW_PARAMS, MOTION_ARGS, float2 start)
 {
-    return motionKind == MOTION_DROP ? dropPush(dropCentre, dropRadius, start) : rungeKutta4(FLOW_PASS, start);
+    return motionKind == MOTION_FLOW ? rungeKutta4(FLOW_PASS, start) : mapped(MOTION_PASS, start);
 }
 
 // Work-item g's lanes hold vertices VF_LANES·g + k (k < VF_LANES); those past the last vertex repeat
@@ -216,7 +237,7 @@ VF_KERNEL void advect(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, uint n, _
                            endX.s6, endY.s6, x.s6, y.s6, endX.s7, endY.s7, x.s7, y.s7), 1, (__global float *)group);
         return;
     }
-    // The last group, or a drop (whose push stays one vertex at a time).
+    // The last group, or a map (one vertex at a time).
     float xs[VF_LANES], ys[VF_LANES], ends[2][VF_LANES];
     VF_VSTORE(x, 0, xs);
     VF_VSTORE(y, 0, ys);
@@ -224,8 +245,7 @@ VF_KERNEL void advect(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, uint n, _
     VF_VSTORE(endY, 0, ends[1]);
     for (int k = 0; k < VF_LANES && VF_LANES * g + k < n; ++k) {
         const float2 start = (float2)(xs[k], ys[k]);
-        const float2 p = motionKind == MOTION_DROP ? dropPush(dropCentre, dropRadius, start)
-                                                   : (float2)(ends[0][k], ends[1][k]);
+        const float2 p = motionKind == MOTION_FLOW ? (float2)(ends[0][k], ends[1][k]) : mapped(MOTION_PASS, start);
         if (!isfinite(p.x) || !isfinite(p.y))
             atomic_or(&status[STATUS_STICKY], FLAG_NON_FINITE);
         group[k] = (float4)(p, start);
