@@ -165,4 +165,10 @@ std::vector<StartingRegion> startingRegions(const RegionSpec& region, double max
     return regions;
 }
 
+StylusStroke CombStroke::tineStroke(int k) const
+{
+    const sim::Vec2 start = map().tineStart(k);
+    return StylusStroke{radius, {start, start + (to - from)}, {time, time + duration}};
+}
+
 } // namespace vf::model

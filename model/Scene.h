@@ -2,6 +2,7 @@
 // The scene file (*.vfscene) as data: what docs/scene-format.md describes, already validated.
 // SceneReader fills it from JSON, SceneWriter writes it back, SceneRunner plays it.
 #include "model/SvgImport.h"
+#include "sim/Comb.h"
 #include "sim/Geometry.h"
 
 #include <QByteArray>
@@ -137,7 +138,26 @@ struct DropStroke {
     friend bool operator==(const DropStroke&, const DropStroke&) = default;
 };
 
-using Stroke = std::variant<StylusStroke, DropStroke>;
+// A comb (rake) drawn across the tray at `time`: exactly, as the map of sim/Comb.h applied to the
+// ink at once, or in the water, as one stylus per tine moving together for `duration` seconds.
+struct CombStroke {
+    enum class Mode { Water, Exact };
+    Mode mode = Mode::Water;
+    double time = 0.0;
+    sim::Vec2 from, to;
+    int tines = 1;
+    double spacing = 0.1;     // between tines, canvas units
+    double sharpness = 0.02;  // exact: u of the map, canvas units
+    double duration = 0.5;    // water: seconds the tines take from `from` to `to`
+    double radius = 0.03;     // water: each tine's stylus radius
+
+    sim::Comb map() const { return {from, to, tines, spacing, sharpness}; }
+    // Water: the path of tine k, as a stylus stroke.
+    StylusStroke tineStroke(int k) const;
+    friend bool operator==(const CombStroke&, const CombStroke&) = default;
+};
+
+using Stroke = std::variant<StylusStroke, DropStroke, CombStroke>;
 
 struct Scene {
     Canvas canvas;
@@ -159,6 +179,7 @@ inline constexpr std::int64_t maxVertices = 1'000'000'000;
 inline constexpr std::size_t maxRegions = 100'000;
 inline constexpr std::size_t maxPolygonPoints = 10'000'000;
 inline constexpr std::size_t maxStrokes = 1'000'000;
+inline constexpr int maxTines = 1000;
 inline constexpr double maxCanvasSize = 1e6;
 // Shorter lengths vanish next to coordinates of up to 1e6 (a double holds about 16 digits): a circle
 // that small would have all its vertices on one point, a canvas that narrow an infinite scale.

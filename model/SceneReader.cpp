@@ -259,15 +259,37 @@ const Key<DropStroke> dropKeys[] = {
     {u"name"_s, false, [](const Field& f, DropStroke& d) { d.name = f.name(); }},
 };
 
+const Key<CombStroke> combKeys[] = {
+    {u"tool"_s, true, readAlready<CombStroke>},
+    {u"mode"_s, false,
+     [](const Field& f, CombStroke& c) {
+         c.mode = f.choice<CombStroke::Mode>({{u"water"_s, CombStroke::Mode::Water}, {u"exact"_s, CombStroke::Mode::Exact}});
+     }},
+    {u"time"_s, true, [](const Field& f, CombStroke& c) { c.time = seconds(f); }},
+    {u"from"_s, true, [](const Field& f, CombStroke& c) { c.from = point(f); }},
+    {u"to"_s, true, [](const Field& f, CombStroke& c) { c.to = point(f); }},
+    {u"tines"_s, false, [](const Field& f, CombStroke& c) { c.tines = int(f.integer(1, limits::maxTines)); }},
+    {u"spacing"_s, false, [](const Field& f, CombStroke& c) { c.spacing = f.number(0.0, limits::maxCanvasSize); }},
+    {u"sharpness"_s, false, [](const Field& f, CombStroke& c) { c.sharpness = length(f); }},
+    {u"duration"_s, false, [](const Field& f, CombStroke& c) { c.duration = f.positive(kHuge); }},
+    {u"radius"_s, false, [](const Field& f, CombStroke& c) { c.radius = length(f); }},
+};
+
 Stroke readStroke(const Field& field)
 {
-    enum class Tool { Stylus, Drop };
+    enum class Tool { Stylus, Drop, Comb };
     const Field tool = field.member(u"tool"_s);
     if (!tool.exists())
         tool.fail(u"missing (required)"_s);
-    if (tool.choice<Tool>({{u"stylus"_s, Tool::Stylus}, {u"drop"_s, Tool::Drop}}) == Tool::Stylus)
+    switch (tool.choice<Tool>({{u"stylus"_s, Tool::Stylus}, {u"drop"_s, Tool::Drop}, {u"comb"_s, Tool::Comb}})) {
+    case Tool::Stylus:
         return readAs(field, stylusKeys);
-    return readAs(field, dropKeys);
+    case Tool::Drop:
+        return readAs(field, dropKeys);
+    case Tool::Comb:
+        break;
+    }
+    return readAs(field, combKeys);
 }
 
 // ---- the whole scene --------------------------------------------------------------------------
@@ -306,9 +328,13 @@ void checkStrokesFitFlow(const Scene& scene, const KeyPath& root)
     if (scene.flow.type != FlowSpec::Type::Analytic)
         return;
     for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
+        const auto* comb = std::get_if<CombStroke>(&scene.strokes[i]);
         if (std::holds_alternative<StylusStroke>(scene.strokes[i]))
             itemPath(root, u"strokes"_s, i).key(u"tool"_s).fail(
                 u"a stylus needs \"flow\": {\"type\": \"fluid\"}: an analytic flow is prescribed and does not react to it"_s);
+        if (comb && comb->mode == CombStroke::Mode::Water)
+            itemPath(root, u"strokes"_s, i).key(u"mode"_s).fail(
+                u"a comb in the water needs \"flow\": {\"type\": \"fluid\"}; use \"mode\": \"exact\" with an analytic flow"_s);
     }
 }
 

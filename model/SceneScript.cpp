@@ -16,10 +16,17 @@ SceneScript::SceneScript(const Scene& scene)
     m_startingRegions = int(m_looks.size());
 
     for (const Stroke& s : scene.strokes) {
-        if (const auto* drop = std::get_if<DropStroke>(&s))
+        if (const auto* drop = std::get_if<DropStroke>(&s)) {
             m_drops.push_back(*drop);
-        else
+        } else if (const auto* comb = std::get_if<CombStroke>(&s)) {
+            if (comb->mode == CombStroke::Mode::Exact)
+                m_combs.push_back(*comb);
+            else
+                for (int k = 0; k < comb->tines; ++k)
+                    m_strokes.push_back(comb->tineStroke(k));
+        } else {
             m_strokes.push_back(std::get<StylusStroke>(s));
+        }
     }
     std::stable_sort(m_drops.begin(), m_drops.end(), [](const DropStroke& a, const DropStroke& b) { return a.time < b.time; });
 
@@ -55,6 +62,15 @@ bool SceneScript::applyDrops(sim::Simulation& simulation, double from, double to
     for (const DropStroke& drop : m_drops)
         if (drop.time > from && drop.time <= to)
             limitReached = simulation.drop(drop.center, drop.radius).vertexLimitReached || limitReached;
+    return limitReached;
+}
+
+bool SceneScript::applyCombs(sim::Simulation& simulation, double from, double to) const
+{
+    bool limitReached = false;
+    for (const CombStroke& comb : m_combs)
+        if (comb.time > from && comb.time <= to)
+            limitReached = !simulation.comb(comb.map()) || limitReached;
     return limitReached;
 }
 

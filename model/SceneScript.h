@@ -1,5 +1,5 @@
 #pragma once
-// The timed part of a scene: its drops and stylus strokes, played into a simulation as its time
+// The timed part of a scene: its drops, combs and stylus strokes, played into a simulation as its time
 // passes. Stateless: what happens over (from, to] depends only on the interval, so the same script
 // plays on unchanged after a simulation is restored to an earlier state (the app's undo).
 #include "model/Regions.h"
@@ -25,13 +25,17 @@ public:
     // Lands the drops due in (from, to], in order; returns whether one took the vertex count to
     // tracking.max_vertices.
     bool applyDrops(sim::Simulation& simulation, double from, double to) const;
+    // Applies the exact combs due in (from, to], in file order; returns whether one took the vertex
+    // count to tracking.max_vertices. (A comb in the water is a stylus stroke per tine.)
+    bool applyCombs(sim::Simulation& simulation, double from, double to) const;
     // The stylus strokes' share of (from, to]: every piece of a pen path overlapping the interval
     // acts with the part of it inside the interval.
     void applyStylus(sim::Simulation& simulation, double from, double to) const;
 
 private:
     std::vector<DropStroke> m_drops;  // in landing order
-    std::vector<StylusStroke> m_strokes;
+    std::vector<StylusStroke> m_strokes;  // with a comb in the water's tines
+    std::vector<CombStroke> m_combs;      // the exact ones
     RegionTable m_looks;
     int m_startingRegions = 0;
 };

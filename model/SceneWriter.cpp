@@ -111,6 +111,25 @@ QJsonObject toJson(const DropStroke& d)
     return drop;
 }
 
+// Every key, defaults included: a program reading it needs no table of defaults.
+QJsonObject toJson(const CombStroke& c)
+{
+    QJsonObject comb{{u"tool"_s, u"comb"_s},
+                     {u"mode"_s, c.mode == CombStroke::Mode::Exact ? u"exact"_s : u"water"_s},
+                     {u"time"_s, c.time},
+                     {u"from"_s, pair(c.from)},
+                     {u"to"_s, pair(c.to)},
+                     {u"tines"_s, c.tines},
+                     {u"spacing"_s, c.spacing}};
+    if (c.mode == CombStroke::Mode::Exact) {
+        comb.insert(u"sharpness"_s, c.sharpness);
+    } else {
+        comb.insert(u"duration"_s, c.duration);
+        comb.insert(u"radius"_s, c.radius);
+    }
+    return comb;
+}
+
 template <typename... Ts>
 QJsonObject toJson(const std::variant<Ts...>& value)
 {

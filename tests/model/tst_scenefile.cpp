@@ -76,6 +76,9 @@ Scene richScene()
     s.strokes.push_back(StylusStroke{0.0125, {{0.2, 0.5}, {0.8, 0.5}, {0.9, 0.6}}, {0.0, 0.4, 0.4}});
     s.strokes.push_back(DropStroke{0.5, {0.5, 0.5}, 0.1, QColor(241, 196, 15), u"sun"_s});
     s.strokes.push_back(DropStroke{1e6, {2.0, -3.0}, 1e-3, QColor(0, 0, 0, 254), QString()});
+    s.strokes.push_back(CombStroke{CombStroke::Mode::Water, 0.7, {0.1, 0.2}, {0.9, 0.2 + 1e-12}, 7, 1.0 / 30.0,
+                                   0.02, 0.75, 0.011});
+    s.strokes.push_back(CombStroke{CombStroke::Mode::Exact, 0.0, {0.5, 0.1}, {0.5, 0.9}, 1, 0.0, 1.0 / 3.0, 0.5, 0.03});
     return s;
 }
 
@@ -87,6 +90,7 @@ Scene analyticScene()
     s.flow.v = u"sin(pi*y)^2*sin(2*pi*x)*cos(pi*t/8)"_s;
     s.regions.push_back({u"ink"_s, QColor(29, 53, 87), true, CircleShape{{0.5, 0.75}, 0.15}});
     s.strokes.push_back(DropStroke{0.25, {0.5, 0.5}, 0.05, QColor(241, 196, 15), QString()});
+    s.strokes.push_back(CombStroke{CombStroke::Mode::Exact, 0.5, {0.2, 0.5}, {0.6, 0.5}, 4, 0.1, 0.025, 0.5, 0.03});
     return s;
 }
 

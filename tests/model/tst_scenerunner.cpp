@@ -45,6 +45,56 @@ private slots:
         QCOMPARE(runner.simulation().regionCount(), 3);
     }
 
+    // An exact comb acts in the step that covers its time, after that step's drops, as the map
+    // applied to the simulation directly would; one at t = 0 is part of the start.
+    void exactCombsActAtTheirTime()
+    {
+        Scene scene = stillScene();
+        CombStroke comb{CombStroke::Mode::Exact, 0.045, {0.1, 0.3}, {0.5, 0.3}, 3, 0.08, 0.02};
+        scene.strokes.push_back(comb);
+        SceneRunner runner(scene);
+        auto direct = sim::makeReferenceSimulation(simulationSettings(scene));
+        direct->addRegion(shapeContours(scene.regions[0].shape, scene.tracking.maxSpacing));
+        for (int step = 0; step < 4; ++step) {
+            runner.step(0.01);
+            direct->step(0.01);
+        }
+        QCOMPARE(runner.simulation().contours(), direct->contours());
+        runner.step(0.01);  // the step covering t = 0.045
+        QVERIFY(direct->comb(comb.map()));
+        direct->step(0.01);
+        QCOMPARE(runner.simulation().contours(), direct->contours());
+        QVERIFY(sim::hausdorffDistance(runner.simulation().regions()[0][0],
+                                       SceneRunner(stillScene()).simulation().regions()[0][0]) > 0.1);
+
+        scene.strokes = {CombStroke{CombStroke::Mode::Exact, 0.0, {0.1, 0.3}, {0.5, 0.3}, 3, 0.08, 0.02}};
+        QVERIFY(sim::hausdorffDistance(SceneRunner(scene).simulation().regions()[0][0],
+                                       SceneRunner(stillScene()).simulation().regions()[0][0]) > 0.1);
+    }
+
+    // A comb in the water is its tines' stylus strokes, moving together.
+    void waterCombIsItsTines()
+    {
+        Scene tines;  // fluid
+        tines.regions.push_back({QStringLiteral("ink"), Qt::black, true, CircleShape{{0.5, 0.5}, 0.15}});
+        Scene comb = tines;
+        const CombStroke rake{CombStroke::Mode::Water, 0.01, {0.5, 0.2}, {0.5, 0.8}, 3, 0.1, 0.02, 0.2, 0.02};
+        comb.strokes.push_back(rake);
+        for (int k = 0; k < rake.tines; ++k)
+            tines.strokes.push_back(rake.tineStroke(k));
+        SceneRunner byComb(comb), byTines(tines);
+        const auto start = byComb.simulation().regions()[0][0];
+        for (int step = 0; step < 12; ++step) {
+            byComb.step(0.02);
+            byTines.step(0.02);
+        }
+        QCOMPARE(byComb.simulation().contours(), byTines.simulation().contours());
+        QVERIFY2(sim::hausdorffDistance(byComb.simulation().regions()[0][0], start) > 0.01, "the comb moved no ink");
+        // The tines are spaced across the stroke, centred on it.
+        QCOMPARE(rake.tineStroke(0).points[0], sim::Vec2(0.6, 0.2));
+        QCOMPARE(rake.tineStroke(2).points[1], sim::Vec2(0.4, 0.8));
+    }
+
     void pictureCarriesTheSceneLook()
     {
         Scene scene = stillScene();
