@@ -16,6 +16,12 @@ namespace vf::sim {
 
 namespace {
 
+// The vertex after i on a ring of n (no division: this runs for every vertex and edge).
+std::size_t after(std::size_t i, std::size_t n)
+{
+    return i + 1 == n ? 0 : i + 1;
+}
+
 // Every edge of every contour in the cells its box, widened by its contour's pinch width, overlaps:
 // the edges of a contour within that width of a point are among those of the point's cell.
 // Counting sort, as ProximityGrid.
@@ -34,7 +40,7 @@ public:
             for (std::size_t i = 0; i < c.size(); ++i) {
                 low = glm::min(low, c[i]);
                 high = glm::max(high, c[i]);
-                edgeLength += glm::distance(c[i], c[(i + 1) % c.size()]);
+                edgeLength += glm::distance(c[i], c[after(i, c.size())]);
             }
             edges += c.size();
         }
@@ -86,7 +92,7 @@ private:
         for (std::size_t k = 0; k < contours.size(); ++k) {
             const Outline& p = contours[k];
             for (std::size_t i = 0; i < p.size(); ++i) {
-                const Vec2 a = p[i], b = p[(i + 1) % p.size()];
+                const Vec2 a = p[i], b = p[after(i, p.size())];
                 const auto [c0, r0] = cellOf(glm::min(a, b) - Vec2(m_widths[k]));
                 const auto [c1, r1] = cellOf(glm::max(a, b) + Vec2(m_widths[k]));
                 for (int r = r0; r <= r1; ++r)
@@ -133,8 +139,8 @@ bool cutIsClean(const std::vector<Outline>& contours, const EdgeGrid& grid, std:
                 const std::array<std::size_t, 4>& ends, const std::vector<std::pair<Vec2, Vec2>>& earlierCuts)
 {
     const Outline& q = contours[k];
-    const auto [vertex, edge, before, after] = ends;
-    const std::array<std::pair<Vec2, Vec2>, 2> made{{{q[edge], q[vertex]}, {q[before], q[after]}}};
+    const auto [vertex, edge, vertexBefore, edgeAfter] = ends;
+    const std::array<std::pair<Vec2, Vec2>, 2> made{{{q[edge], q[vertex]}, {q[vertexBefore], q[edgeAfter]}}};
     if (properlyCross(made[0].first, made[0].second, made[1].first, made[1].second))
         return false;
     for (const auto& [from, to] : made) {
@@ -144,7 +150,7 @@ bool cutIsClean(const std::vector<Outline>& contours, const EdgeGrid& grid, std:
         bool clean = true;
         grid.forEdgesNear(from, to, [&](EdgeGrid::Edge e) {
             const Outline& other = contours[e.contour];
-            const std::size_t next = (e.from + 1) % other.size();
+            const std::size_t next = after(e.from, other.size());
             if (e.contour == k && std::any_of(ends.begin(), ends.end(),
                                               [&](std::size_t v) { return v == e.from || v == next; }))
                 return;
@@ -231,9 +237,13 @@ std::vector<Pinch> pinchesOf(const std::vector<Outline>& contours, const EdgeGri
     for (std::size_t i = 0; i < n; ++i) {
         grid.forEdgesNear(q[i], q[i], [&](EdgeGrid::Edge e) {
             const std::size_t j = e.from;
-            if (e.contour != k || j == i || j == (i + n - 1) % n)
+            if (e.contour != k || j == i || after(j, n) == i)
                 return;
-            if (distanceToSegment2(q[i], q[j], q[(j + 1) % n]) >= width * width)
+            const Vec2 p = q[i], a = q[j], b = q[after(j, n)];
+            // Most edges of the cell are far: their widened boxes leave them out before any distance.
+            if (p.x < std::min(a.x, b.x) - width || p.x > std::max(a.x, b.x) + width ||
+                p.y < std::min(a.y, b.y) - width || p.y > std::max(a.y, b.y) + width ||
+                distanceToSegment2(p, a, b) >= width * width)
                 return;
             const std::size_t loop = (j + n - i) % n + 1;
             pinches.push_back({i, j, std::min(loop, n - loop)});

@@ -19,9 +19,9 @@ namespace vf::sim {
 inline constexpr double pinchSpacings = 64.0;
 
 // A pinch is looked for once in every this much simulated time (seconds): a check costs a pass
-// over every vertex (on a device, after reading the positions back), and a layer takes several
-// of these periods to thin from the pinch width (7.6e-6) to where it could cross (about 3e-8):
-// five e-foldings, at the strain rates of the marbling sessions along a wall.
+// over every vertex (on a device, after reading the positions back), and a layer must thin some
+// 250-fold from the pinch width (7.6e-6) to where layers crossed without the cut (about 3e-8).
+// Checked this often, no session of the benchmarks has crossed (docs/BENCHMARKS.md, "Topology").
 inline constexpr double pinchCheckPeriod = 0.1;
 // Whether a step from t0 to t1 is due a check: it passes a multiple of the period (so a restored
 // snapshot checks where the original run did).
