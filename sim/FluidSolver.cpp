@@ -140,15 +140,6 @@ Vec2 trace(const MacVelocity& m, Vec2 g, Vec2 step)
     return g - step * detail::sampleCells(m, mid.x, mid.y);
 }
 
-double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b)
-{
-    const Vec2 ab = b - a;
-    const double length2 = glm::dot(ab, ab);
-    const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-    const Vec2 d = p - (a + t * ab);
-    return glm::dot(d, d);
-}
-
 bool isFinite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 void validate(const FluidSettings& s)

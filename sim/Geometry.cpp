@@ -117,17 +117,14 @@ Polygon circle(Vec2 center, double radius, double maxSpacing)
     return out;
 }
 
-namespace {
-
-double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b)
+double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b)
 {
     const Vec2 ab = b - a;
-    const double len2 = glm::dot(ab, ab);
-    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::distance(p, a + t * ab);
+    const double length2 = glm::dot(ab, ab);
+    const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+    const Vec2 d = p - (a + t * ab);
+    return glm::dot(d, d);
 }
-
-} // namespace
 
 double directedHausdorffDistance(const Polygon& from, const Polygon& to)
 {
@@ -135,7 +132,7 @@ double directedHausdorffDistance(const Polygon& from, const Polygon& to)
     for (const Vec2& p : from) {
         double best = INFINITY;
         for (std::size_t i = 0; i < to.size(); ++i)
-            best = std::min(best, pointSegmentDistance(p, to[i], to[(i + 1) % to.size()]));
+            best = std::min(best, std::sqrt(squaredDistanceToSegment(p, to[i], to[(i + 1) % to.size()])));
         worst = std::max(worst, best);
     }
     return worst;

@@ -39,6 +39,7 @@ Polygon resample(const Polygon& polygon, double maxSpacing);
 // A circle sampled with edges no longer than maxSpacing (at least 8 vertices), positive area.
 Polygon circle(Vec2 center, double radius, double maxSpacing);
 
+double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b);
 // Largest distance from a vertex of `from` to the closed polyline `to`.
 double directedHausdorffDistance(const Polygon& from, const Polygon& to);
 // Symmetric Hausdorff distance between two closed polylines (vertex-to-segment, both ways).

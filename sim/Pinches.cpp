@@ -118,14 +118,6 @@ struct Pinch {
     std::size_t smallerLoop = 0;
 };
 
-double distanceToSegment2(Vec2 p, Vec2 a, Vec2 b)
-{
-    const Vec2 ab = b - a;
-    const double length2 = glm::dot(ab, ab);
-    const double s = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-    const Vec2 d = p - (a + s * ab);
-    return glm::dot(d, d);
-}
 
 bool properlyCross(Vec2 a, Vec2 b, Vec2 c, Vec2 d)
 {
@@ -243,7 +235,7 @@ std::vector<Pinch> pinchesOf(const std::vector<Outline>& contours, const EdgeGri
             // Most edges of the cell are far: their widened boxes leave them out before any distance.
             if (p.x < std::min(a.x, b.x) - width || p.x > std::max(a.x, b.x) + width ||
                 p.y < std::min(a.y, b.y) - width || p.y > std::max(a.y, b.y) + width ||
-                distanceToSegment2(p, a, b) >= width * width)
+                squaredDistanceToSegment(p, a, b) >= width * width)
                 return;
             const std::size_t loop = (j + n - i) % n + 1;
             pinches.push_back({i, j, std::min(loop, n - loop)});
