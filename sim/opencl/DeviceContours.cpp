@@ -1,10 +1,11 @@
 // The contour tracker of sim/ContourTracker.cpp on an OpenCL device: the host side of one step
-// (advect, spacing, proximity grid, refinement by stream compaction, area correction) and the
-// transfers in and out. One file because every phase works on the same device buffers, held in
+// (advect, spacing, proximity grid, refinement by stream compaction, area correction, the cuts of
+// contour surgery) and the transfers in and out. One file because every phase works on the same device buffers, held in
 // Impl, and its launches must agree with them; the kernels are in contours*.cl, split by phase.
 // The seam for a split is the read-back half (snapshots, outlines, staging, requests, from
 // enqueueSnapshot on): it only reads the vertex buffers (through the motion scratch), and would
-// move out with Impl's declaration in a private header shared by both files.
+// move out with Impl's declaration in a private header shared by both files; contour surgery
+// (cutPinches, applyCuts) could follow it, as it reads the positions back the same way.
 #include "sim/opencl/DeviceContours.h"
 
 #include "sim/ContourTracker.h"
