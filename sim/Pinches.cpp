@@ -135,7 +135,8 @@ bool cutIsClean(const std::vector<Outline>& contours, const EdgeGrid& grid, std:
     const std::array<std::pair<Vec2, Vec2>, 2> made{{{q[edge], q[vertex]}, {q[vertexBefore], q[edgeAfter]}}};
     if (properlyCross(made[0].first, made[0].second, made[1].first, made[1].second))
         return false;
-    for (const auto& [from, to] : made) {
+    for (const auto& cut : made) {
+        const Vec2 from = cut.first, to = cut.second; // named, not bound: clang 14 cannot capture bindings
         for (const auto& [a, b] : earlierCuts)
             if (properlyCross(from, to, a, b))
                 return false;
