@@ -7,6 +7,8 @@
 // (from and to swapped) undoes it exactly.
 #include "sim/Geometry.h"
 
+#include <optional>
+
 namespace vf::sim {
 
 struct Comb {
@@ -21,6 +23,9 @@ struct Comb {
     Comb inverse() const { return Comb{to, from, tines, spacing, sharpness}; }
     // Where tine k starts (on the line through `from` across the stroke).
     Vec2 tineStart(int k) const;
+    // Where the segment a–b crosses a tine's line, the one crossing nearest its middle, as a
+    // fraction along it: the map is not smooth there (d has a corner).
+    std::optional<double> tineCrossing(Vec2 a, Vec2 b) const;
 };
 
 } // namespace vf::sim

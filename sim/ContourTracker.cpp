@@ -90,11 +90,40 @@ public:
         return std::abs(std::atan2(e0.x * e1.y - e0.y * e1.x, glm::dot(e0, e1)));
     }
 
-    // Eq. 2: the new vertex is the midpoint of the edge *at the start of the motion*, moved by it.
-    int splitAfter(int a, const MotionMap& map)
+    // Where the edge after a needs a vertex, as a fraction along it at the start of the motion: in
+    // the middle when it is longer than its spacing; for an exact motion also where its chord strays
+    // from the mapped curve by more than the tolerance, at a crease first.
+    std::optional<double> splitPoint(int a, const ExactMotion& motion) const
     {
         const int b = m_next[a];
-        const Vec2 start = 0.5 * (m_previous[a] + m_previous[b]);
+        if (m_rewind && motion.chordTolerance > 0.0) {
+            if (motion.crease)
+                if (const std::optional<double> s = motion.crease(m_previous[a], m_previous[b]); s && strays(a, *s, motion))
+                    return s;
+            if (length(a, b) > spacing(a, b) || strays(a, 0.5, motion))
+                return 0.5;
+            return std::nullopt;
+        }
+        return length(a, b) > spacing(a, b) ? std::optional(0.5) : std::nullopt;
+    }
+
+    // Whether v lies farther than an exact motion's tolerance from the chord that its removal would
+    // leave.
+    bool holdsShape(int v, const ExactMotion& motion) const
+    {
+        const double tolerance = motion.chordTolerance;
+        const int a = m_before[v], b = m_next[v];
+        return m_rewind && tolerance > 0.0 &&
+               std::max(squaredDistanceToSegment(m_position[v], m_position[a], m_position[b]),
+                        squaredDistanceToSegment(m_previous[v], m_previous[a], m_previous[b])) > tolerance * tolerance;
+    }
+
+    // Eq. 2: the new vertex is the point at fraction s of the edge *at the start of the motion*
+    // (its midpoint unless a crease is there), moved by it.
+    int splitAfter(int a, double s, const MotionMap& map)
+    {
+        const int b = m_next[a];
+        const Vec2 start = m_previous[a] + s * (m_previous[b] - m_previous[a]);
         const int m = int(m_position.size());
         m_position.push_back(m_rewind ? map(start) : 0.5 * (m_position[a] + m_position[b]));
         m_previous.push_back(start);
@@ -125,6 +154,15 @@ public:
                 return true;
         }
         return false;
+    }
+
+    // Whether the point at fraction s of the edge after a, moved by the motion, lies farther than its
+    // tolerance from the edge's chord.
+    bool strays(int a, double s, const ExactMotion& motion) const
+    {
+        const int b = m_next[a];
+        const Vec2 x = motion.map(m_previous[a] + s * (m_previous[b] - m_previous[a]));
+        return squaredDistanceToSegment(x, m_position[a], m_position[b]) > motion.chordTolerance * motion.chordTolerance;
     }
 
     void unlink(int v)
@@ -194,14 +232,14 @@ private:
 };
 
 // Splits every edge longer than its spacing, recursively. False when `budget` vertices are reached.
-bool splitPass(Ring& ring, int start, const MotionMap& map, std::size_t budget, bool& changed)
+bool splitPass(Ring& ring, int start, const ExactMotion& motion, std::size_t budget, bool& changed)
 {
     int v = start;
     do {
-        while (ring.length(v, ring.next(v)) > ring.spacing(v, ring.next(v))) {
+        for (std::optional<double> s = ring.splitPoint(v, motion); s; s = ring.splitPoint(v, motion)) {
             if (std::size_t(ring.alive()) >= budget)
                 return false;
-            ring.splitAfter(v, map);
+            ring.splitAfter(v, *s, motion.map);
             changed = true;
         }
         v = ring.next(v);
@@ -212,7 +250,7 @@ bool splitPass(Ring& ring, int start, const MotionMap& map, std::size_t budget, 
 // Removes a vertex of every edge shorter than half its spacing: the straighter endpoint, so corners
 // and curl tips survive. Where removal would leave an edge longer than its spacing, the vertex is
 // recentred instead. Removes thin needle tips (isThinTip). Returns the (possibly new) start vertex.
-int collapsePass(Ring& ring, int start, const MotionMap& map, bool& changed)
+int collapsePass(Ring& ring, int start, const ExactMotion& motion, bool& changed)
 {
     int v = start;
     for (int steps = ring.alive(); steps > 0 && ring.alive() > 3; --steps) {
@@ -231,6 +269,10 @@ int collapsePass(Ring& ring, int start, const MotionMap& map, bool& changed)
             continue;
         }
         const int victim = ring.turning(v) < ring.turning(w) ? v : w;
+        if (ring.holdsShape(victim, motion)) {
+            v = w;
+            continue;
+        }
         const int a = ring.before(victim), b = ring.next(victim);
         const bool removable = ring.length(a, b) <= ring.spacing(a, b) &&
                                !ring.crossesNearby(ring.position(a), ring.position(b), a, b, victim, foldReach);
@@ -238,7 +280,7 @@ int collapsePass(Ring& ring, int start, const MotionMap& map, bool& changed)
             ring.unlink(victim);
             if (victim == start)
                 start = b;
-        } else if (!ring.recentre(victim, map)) {
+        } else if (!ring.recentre(victim, motion.map)) {
             v = w;
             continue;
         }
@@ -317,7 +359,7 @@ bool ContourTracker::advect(const Flow& flow, double t, double dt)
             requireFinite(c);
         }
     }
-    return refineAll([&flow, t, dt](Vec2 p) { return rungeKutta4(flow, p, t, dt); }, flow, t + dt);
+    return refineAll({[&flow, t, dt](Vec2 p) { return rungeKutta4(flow, p, t, dt); }, {}, 0.0}, flow, t + dt);
 }
 
 std::size_t ContourTracker::cutPinches()
@@ -331,18 +373,29 @@ std::size_t ContourTracker::cutPinches()
     return cuts;
 }
 
-bool ContourTracker::applyMotion(const MotionMap& map, const Flow& flow, double t)
+bool ContourTracker::drop(const DropPush& push, const Flow& flow, double t)
+{
+    return applyMotion({push, {}, m_settings.chordTolerance}, flow, t);
+}
+
+bool ContourTracker::comb(const Comb& comb, const Flow& flow, double t)
+{
+    const auto crossing = [comb](Vec2 a, Vec2 b) { return comb.tineCrossing(a, b); };
+    return applyMotion({comb, crossing, m_settings.chordTolerance}, flow, t);
+}
+
+bool ContourTracker::applyMotion(const ExactMotion& motion, const Flow& flow, double t)
 {
     for (Contour& c : m_contours) {
         c.previous = c.positions;
         for (std::size_t i = 0; i < c.positions.size(); ++i)
-            c.positions[i] = map(c.previous[i]);
+            c.positions[i] = motion.map(c.previous[i]);
         requireFinite(c);
     }
-    return refineAll(map, flow, t);
+    return refineAll(motion, flow, t);
 }
 
-bool ContourTracker::refineAll(const MotionMap& map, const Flow& flow, double t)
+bool ContourTracker::refineAll(const ExactMotion& motion, const Flow& flow, double t)
 {
     computeSpacing(m_contours, flow, t, m_settings, m_grid, m_clock);
     bool withinBudget = true;
@@ -350,7 +403,7 @@ bool ContourTracker::refineAll(const MotionMap& map, const Flow& flow, double t)
     for (Contour& c : m_contours) {
         total -= c.positions.size();
         const std::size_t budget = m_settings.maxVertices > total ? m_settings.maxVertices - total : 0;
-        withinBudget = refine(c, map, budget) && withinBudget;
+        withinBudget = refine(c, motion, budget) && withinBudget;
         requireFinite(c);  // split and recentred vertices come from the motion too
         total += c.positions.size();
         if (m_settings.areaCorrection) {
@@ -362,7 +415,7 @@ bool ContourTracker::refineAll(const MotionMap& map, const Flow& flow, double t)
     return withinBudget;
 }
 
-bool ContourTracker::refine(Contour& contour, const MotionMap& map, std::size_t budget)
+bool ContourTracker::refine(Contour& contour, const ExactMotion& motion, std::size_t budget)
 {
     // Split and collapse alternate until neither changes anything: a collapse can leave a long edge
     // and a split a short one, and a few rounds settle both. Should a contour still oscillate after
@@ -376,16 +429,16 @@ bool ContourTracker::refine(Contour& contour, const MotionMap& map, std::size_t 
         bool changed = false;
         {
             const PhaseClock::Scope timing(m_clock, Phase::Split);
-            withinBudget = splitPass(ring, start, map, budget, changed);
+            withinBudget = splitPass(ring, start, motion, budget, changed);
         }
         const PhaseClock::Scope timing(m_clock, Phase::Collapse);
-        start = collapsePass(ring, start, map, changed);
+        start = collapsePass(ring, start, motion, changed);
         settled = !changed;
     }
     if (!settled && withinBudget) {
         const PhaseClock::Scope timing(m_clock, Phase::Split);
         bool changed = false;
-        withinBudget = splitPass(ring, start, map, budget, changed);
+        withinBudget = splitPass(ring, start, motion, budget, changed);
     }
     ring.writeTo(contour, start);
     return withinBudget;

@@ -1,12 +1,15 @@
 #pragma once
 // Lagrangian contour tracking (paper §3.1, §3.3): RK4 advection (eq. 1), refinement by the
 // time-rewinding split (eq. 2) and collapse, adaptive spacing, optional area correction.
+#include "sim/Comb.h"
+#include "sim/Drop.h"
 #include "sim/Flow.h"
 #include "sim/PhaseClock.h"
 #include "sim/ProximityGrid.h"
 #include "sim/Tracking.h"
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace vf::sim {
@@ -15,6 +18,18 @@ namespace vf::sim {
 // RK4 flow map over the step, for an ink drop the drop's push; splitting an edge evaluates it at
 // the midpoint of the edge's *previous* endpoints (eq. 2), so new vertices land on the true curve.
 using MotionMap = std::function<Vec2(Vec2 p)>;
+
+// An instantaneous motion given as an exact map (a drop's push, a comb), depicted exactly: besides
+// the spacing, refinement splits an edge where its chord strays from the mapped curve by more than
+// `chordTolerance` (at its middle, or at a crease of the map: a line along which the map bends
+// sharply and is not smooth, such as a comb's tine), and collapses no vertex whose removal would
+// leave a chord straying that far. `crease(a, b)` is where the segment a–b of positions before the
+// motion crosses a crease, as a fraction along it (the crossing nearest its middle), if it does.
+struct ExactMotion {
+    MotionMap map;
+    std::function<std::optional<double>(Vec2 a, Vec2 b)> crease;
+    double chordTolerance = 0.0;
+};
 
 class ContourTracker {
 public:
@@ -37,9 +52,10 @@ public:
     // max_vertices; the contours are then valid but may have edges longer than d_i.
     bool advect(const Flow& flow, double t, double dt);
 
-    // Moves every vertex by `map` (an instantaneous motion such as an ink drop) and refines;
-    // `flow` and `t` feed the spacing's vorticity term.
-    bool applyMotion(const MotionMap& map, const Flow& flow, double t);
+    // Moves every vertex by an ink drop's push or a comb, depicted exactly (ExactMotion, within the
+    // settings' chord tolerance), and refines; `flow` and `t` feed the spacing's vorticity term.
+    bool drop(const DropPush& push, const Flow& flow, double t);
+    bool comb(const Comb& comb, const Flow& flow, double t);
 
     // Raises the area-correction target of every contour winding around `p` by `area` per turn:
     // an ink drop landing inside a contour makes it enclose the drop as well.
@@ -55,8 +71,9 @@ public:
     void setPhaseClock(PhaseClock* clock) { m_clock = clock; }
 
 private:
-    bool refineAll(const MotionMap& map, const Flow& flow, double t);
-    bool refine(Contour& contour, const MotionMap& map, std::size_t budget);
+    bool applyMotion(const ExactMotion& motion, const Flow& flow, double t);
+    bool refineAll(const ExactMotion& motion, const Flow& flow, double t);
+    bool refine(Contour& contour, const ExactMotion& motion, std::size_t budget);
 
     TrackingSettings m_settings;
     std::vector<Contour> m_contours;

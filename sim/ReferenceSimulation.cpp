@@ -4,9 +4,7 @@
 #include "sim/FluidFlow.h"
 #include "sim/Pinches.h"
 
-#include <glm/geometric.hpp>
 
-#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -42,20 +40,12 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
 
 bool ReferenceSimulation::comb(const Comb& comb)
 {
-    return m_tracker.applyMotion(comb, *m_flow, time());
+    return m_tracker.comb(comb, *m_flow, time());
 }
 
 bool ReferenceSimulation::pushOutward(Vec2 center, double radius)
 {
-    const double r2 = radius * radius;
-    const MotionMap push = [center, radius, r2](Vec2 p) {
-        const Vec2 d = p - center;
-        const double l2 = glm::dot(d, d);
-        if (l2 == 0.0)
-            return center + Vec2(radius, 0.0);  // the centre itself: any direction is as good
-        return center + d * std::sqrt(1.0 + r2 / l2);
-    };
-    return m_tracker.applyMotion(push, *m_flow, time());
+    return m_tracker.drop({center, radius}, *m_flow, time());
 }
 
 void ReferenceSimulation::stylus(Vec2 from, Vec2 to, double radius, double duration)

@@ -17,6 +17,11 @@ struct TrackingSettings {
     // Eq. 2: a split vertex is the edge's midpoint at the start of the step, advected. false uses
     // the plain midpoint of the advected edge (kept to measure what rewinding buys).
     bool timeRewinding = true;
+    // How far a chord may stray from the curve of an exact map (a drop, a comb: ExactMotion in
+    // sim/ContourTracker.h), canvas units; 0 depicts it by the spacing alone. A comb drawn back
+    // returns within about seven times this (across its tines, where it shears most): 1e-6. The
+    // device holds positions in float and depicts no finer than two roundings of them.
+    double chordTolerance = 1e-7;
 
     // Reference scales that make the exponentials of eqs. 4, 5 and 7 unit-free. All are relative
     // to d_max so that a finer tracking resolution refines the same features proportionally.
@@ -27,6 +32,7 @@ struct TrackingSettings {
     // The proximity grid's cells: half the radius, searched ring by ring outward.
     double proximityCell() const { return proximityRadius() / 2.0; }
     double minSpacing() const { return maxSpacing / 16.0; }      // ε of eq. 3
+
     int smoothingRadius = 4;  // w of eq. 6, in vertices; σ = w / 2
 
     // A step is split so that no vertex moves further *relative to its neighbour* than this many

@@ -43,6 +43,7 @@ struct Motion {
     cl_int kind = motionFlow;  // RK4 through the flow, the drop's push or a comb
     cl_float4 a{}, b{};        // the map's parameters (contours.cl, MOTION_ARGS)
     cl_int rewind = 1;         // TrackingSettings::timeRewinding
+    cl_float chordTolerance = 0.0f;  // a map's, ExactMotion's (none for the flow)
 };
 
 void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Motion& motion)
@@ -51,6 +52,7 @@ void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Motion& motion)
     kernel.setArg(index++, motion.a);
     kernel.setArg(index++, motion.b);
     kernel.setArg(index++, motion.rewind);
+    kernel.setArg(index++, motion.chordTolerance);
 }
 
 // A kernel argument of the accumulation type acc_t: double on fp64 devices, else float.
@@ -169,6 +171,10 @@ struct DeviceContours::Impl {
     std::size_t tiles() const { return roundUpToLocal(vertices + 1) / localSize; }
     Grid grid() const;
     Motion flowMotion() const { return Motion{motionFlow, {}, {}, cl_int(settings.timeRewinding)}; }
+    Motion mapMotion(cl_int kind, cl_float4 a, cl_float4 b) const
+    {
+        return Motion{kind, a, b, cl_int(settings.timeRewinding), cl_float(settings.chordTolerance)};
+    }
 
     bool move(const FlowBinding& flow, const Motion& motion, bool startKnown = false);
     void computeSpacing(const FlowBinding& flow);
@@ -852,10 +858,7 @@ bool DeviceContours::advect(const FlowBinding& flow, bool startSampled)
 bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
 {
     return guarded([&] {
-        Motion push = m->flowMotion();
-        push.kind = motionDrop;
-        push.a = {{cl_float(center.x), cl_float(center.y), cl_float(radius), 0.0f}};
-        return m->move(flow, push);
+        return m->move(flow, m->mapMotion(motionDrop, {{cl_float(center.x), cl_float(center.y), cl_float(radius), 0.0f}}, {}));
     });
 }
 
@@ -867,11 +870,9 @@ bool DeviceContours::comb(const Comb& comb, const FlowBinding& flow)
         if (!(length > 0.0) || comb.tines < 1 || m->vertices == 0)
             return true;
         const Vec2 along = stroke / length;
-        Motion shear = m->flowMotion();
-        shear.kind = motionComb;
-        shear.a = {{cl_float(comb.from.x), cl_float(comb.from.y), cl_float(along.x), cl_float(along.y)}};
-        shear.b = {{cl_float(length), cl_float(comb.sharpness), cl_float(comb.spacing), cl_float(comb.tines)}};
-        return m->move(flow, shear);
+        return m->move(flow, m->mapMotion(motionComb,
+                                          {{cl_float(comb.from.x), cl_float(comb.from.y), cl_float(along.x), cl_float(along.y)}},
+                                          {{cl_float(length), cl_float(comb.sharpness), cl_float(comb.spacing), cl_float(comb.tines)}}));
     });
 }
 

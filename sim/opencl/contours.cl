@@ -22,10 +22,11 @@ typedef VF_ACC4 acc4;
 // an ink drop's push (MOTION_DROP: mapA is the centre and the radius) or by a comb (MOTION_COMB:
 // mapA is `from` and the unit direction M, mapB the length z, the sharpness, the spacing and the
 // tine count; sim/Comb.h). `rewind` is TrackingSettings::timeRewinding: where a split vertex goes
-// (eq. 2 or the chord). MOTION_*, STATUS_*, FLAG_* and TERMS_* are defined by the host as build
-// options (ContourCodes.h).
-#define MOTION_ARGS int motionKind, float4 mapA, float4 mapB, int rewind
-#define MOTION_PASS motionKind, mapA, mapB, rewind
+// (eq. 2 or the chord). A map is depicted within `chordTolerance` (ExactMotion in
+// sim/ContourTracker.h; 0 for the flow). MOTION_*, STATUS_*, FLAG_* and TERMS_* are defined by the
+// host as build options (ContourCodes.h).
+#define MOTION_ARGS int motionKind, float4 mapA, float4 mapB, int rewind, float chordTolerance
+#define MOTION_PASS motionKind, mapA, mapB, rewind, chordTolerance
 
 // Words of the status buffer the host reads once per pass. Flags are raised with atomic_or, the
 // strain with atomic_max on the bits of a non-negative float: both results are independent of the
@@ -117,10 +118,61 @@ VF_INLINE float2 combShift(float4 line, float4 shape, float2 p)
     return p + shift * along;
 }
 
+// Comb::tineCrossing: where the segment a–b crosses a tine's line (the crossing nearest its middle),
+// as a fraction along it, or -1.
+VF_INLINE float tineCrossing(float4 line, float4 shape, float2 a, float2 b)
+{
+    const float2 across = (float2)(-line.w, line.z);
+    const int tines = (int)shape.w;
+    const float unit = shape.z > 0.0f ? shape.z : 1.0f, last = shape.z > 0.0f ? (float)(tines - 1) : 0.0f;
+    const float2 firstTine = line.xy - 0.5f * (float)(tines - 1) * shape.z * across;
+    const float wa = dot(a - firstTine, across) / unit, wb = dot(b - firstTine, across) / unit;
+    const float first = fmax(floor(fmin(wa, wb)) + 1.0f, 0.0f), final = fmin(ceil(fmax(wa, wb)) - 1.0f, last);
+    if (!(first <= final))
+        return -1.0f;
+    return (clamp(rint(0.5f * (wa + wb)), first, final) - wa) / (wb - wa);
+}
+
 // Where a map (a drop or a comb, not the flow) takes `start`.
 VF_INLINE float2 mapped(MOTION_ARGS, float2 start)
 {
     return motionKind == MOTION_DROP ? dropPush(mapA.xy, mapA.z, start) : combShift(mapA, mapB, start);
+}
+
+// Whether a map is depicted within its chord tolerance (the flow is not).
+VF_INLINE bool depictedExactly(MOTION_ARGS)
+{
+    return motionKind != MOTION_FLOW && rewind && chordTolerance > 0.0f;
+}
+
+// Whether x lies farther than the chord tolerance from the segment a–b. The tolerance is at least
+// two roundings of the coordinates: below that, a float cannot tell a stray from its rounding.
+VF_INLINE bool straysFrom(MOTION_ARGS, float2 x, float2 a, float2 b)
+{
+    const float2 reach = fmax(fmax(fabs(a), fabs(b)), fabs(x));
+    const float tolerance = fmax(chordTolerance, 2.0f * FLT_EPSILON * fmax(reach.x, reach.y));
+    const float2 edge = b - a, toX = x - a;
+    const float along = clamp(dot(toX, edge) / fmax(dot(edge, edge), FLT_MIN), 0.0f, 1.0f);
+    const float2 off = toX - along * edge;
+    return dot(off, off) > tolerance * tolerance;
+}
+
+// ContourTracker's splitPoint: where the edge (position, previous position) left–right needs a
+// vertex, as a fraction along it, or -1. A map depicted exactly puts one at a crease where the
+// chord strays from the mapped curve; else an edge gets one in the middle when it is longer than
+// its spacing (`tooLong`) or, for a map depicted exactly, when its chord strays there.
+VF_INLINE float splitPoint(MOTION_ARGS, float4 left, float4 right, bool tooLong)
+{
+    if (!depictedExactly(MOTION_PASS))
+        return tooLong ? 0.5f : -1.0f;
+    if (motionKind == MOTION_COMB) {
+        const float s = tineCrossing(mapA, mapB, left.zw, right.zw);
+        if (s >= 0.0f && straysFrom(MOTION_PASS, mapped(MOTION_PASS, mix(left.zw, right.zw, s)), left.xy, right.xy))
+            return s;
+    }
+    return tooLong || straysFrom(MOTION_PASS, mapped(MOTION_PASS, 0.5f * (left.zw + right.zw)), left.xy, right.xy)
+               ? 0.5f
+               : -1.0f;
 }
 
 // Where a point that sat at `start` when the motion began is now.

@@ -104,8 +104,9 @@ VF_INLINE void scanTiles(__local uint *scratch, __local uint *itemBefore, const 
 }
 
 // The split of one edge (a, b), exactly as the reference's split pass: while the sub-edge
-// after the current vertex is longer than its spacing (d_p + d_q)/2, it gets a vertex at the
-// midpoint of its endpoints at the start of the motion, moved by the motion (eq. 2). Splitting
+// after the current vertex needs a vertex (splitPoint: longer than its spacing (d_p + d_q)/2, or a
+// map's chord straying), it gets one at that point of the sub-edge at the start of the motion
+// (its midpoint unless a crease is there), moved by the motion (eq. 2). Splitting
 // is depth first, so vertices come out in contour order. Inserted vertices take min(d_a, d_b):
 // with the mean, one half of an edge just over its spacing would fall under half of its own, and
 // split and collapse would undo each other. Returns the number of vertices inserted; with `out`
@@ -128,10 +129,11 @@ VF_INLINE uint splitEdge(FLOW_PARAMS, MOTION_ARGS, float4 a, float4 b, float spa
     for (;;) {
         const float4 right = pending[top];
         const float rightSpacing = top == 0 ? spacingB : inserted;
-        const bool tooLong = distance(left.xy, right.xy) > 0.5f * (leftSpacing + rightSpacing);
-        *capped = *capped || (tooLong && top + 1 == SPLIT_DEPTH);
-        if (tooLong && top + 1 < SPLIT_DEPTH) {
-            const float2 start = 0.5f * (left.zw + right.zw);
+        const float s = splitPoint(MOTION_PASS, left, right,
+                                   distance(left.xy, right.xy) > 0.5f * (leftSpacing + rightSpacing));
+        *capped = *capped || (s >= 0.0f && top + 1 == SPLIT_DEPTH);
+        if (s >= 0.0f && top + 1 < SPLIT_DEPTH) {
+            const float2 start = mix(left.zw, right.zw, s);
             const float2 p = rewind ? moved(FLOW_PASS, MOTION_PASS, start) : 0.5f * (left.xy + right.xy);
             pending[++top] = (float4)(p, start);
             continue;
@@ -241,9 +243,11 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
     // A group of lanes on one contour, with a vertex either side of it there, whose edges are all
     // well inside (d/2, d) and where the contour nowhere turns back (no needle tip) is settled:
     // every vertex stays one to one, with no flag. The margin keeps the vector lengths from
-    // deciding anything the one-vertex test below (distance()) could decide otherwise.
+    // deciding anything the one-vertex test below (distance()) could decide otherwise. A map
+    // depicted exactly looks at every edge's chord, whatever its length.
+    const bool exact = depictedExactly(MOTION_PASS);
     bool settled = false;
-    if (active && first > 0 && oneContour(inContour, first - 1, first + VF_LANES, n)) {
+    if (active && !exact && first > 0 && oneContour(inContour, first - 1, first + VF_LANES, n)) {
         __global const float *positions = (__global const float *)inMotion;
         floatv beforeX, beforeY, x, y, afterX, afterY;
         consecutiveLanes(positions, 4, first - 1, &beforeX, &beforeY);
@@ -269,7 +273,7 @@ VF_KERNEL void splitCount(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global
         const float length = distance(a.xy, b.xy), spacing = 0.5f * (inSpacing[i] + inSpacing[j]);
         produced[k] = 1;
         bool capped = false;
-        if (length > spacing)
+        if (length > spacing || exact)
             produced[k] += splitEdge(FLOW_PASS, MOTION_PASS, a, b, inSpacing[i], inSpacing[j], 0, 0, 0, 0, 0, c,
                                      &capped);
         if (capped)
@@ -438,6 +442,11 @@ VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, __global const float4 *m
         (shortBefore && !(turning(motion[previousIn(a, first, count)].xy, pa, pv) < here)) ||
         (shortAfter && here < turning(pv, pb, motion[nextIn(b, first, count)].xy));
     if (!victim)
+        return ACTION_KEEP;
+    // A map depicted exactly keeps a vertex whose removal would leave a chord straying from the
+    // mapped curve, or from the edge it came from (ContourTracker's holdsShape).
+    if (depictedExactly(MOTION_PASS) && (straysFrom(MOTION_PASS, pv, pa, pb) ||
+                                          straysFrom(MOTION_PASS, motion[v].zw, motion[a].zw, motion[b].zw)))
         return ACTION_KEEP;
     // Removed or recentred only where that folds the contour over none of its nearby edges.
     if (distance(pa, pb) <= 0.5f * (da + db) && !crossesNearby(motion, pa, pb, a, b, v, first, count))

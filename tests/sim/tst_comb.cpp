@@ -97,26 +97,69 @@ private slots:
         QCOMPARE(Comb({0.5, 0.5}, {0.5, 0.5}, 3, 0.1, 0.02)(Vec2(0.1, 0.2)), Vec2(0.1, 0.2));
     }
 
-    // The map keeps areas exactly; the polygon keeps them as well as its chords follow the mapped
-    // curve (the adaptive spacing: 2.5e-5 measured at the default d_max), and to rounding with area
-    // correction on. Drawn back, the comb brings the ink back as far as the combed contour's chords
-    // strayed from the mapped curve where the map bends it most, across the tines: 1.1e-3 to
-    // 1.5e-3 measured (refinement bounds edge lengths, not how far a chord strays).
+    // Where a segment crosses the tines' lines (the map's creases): the crossing nearest its middle.
+    void tineCrossingIsNearestTheMiddle()
+    {
+        const Comb comb{{0.0, 0.5}, {1.0, 0.5}, 3, 0.1, 0.02};  // tines along y = 0.4, 0.5 and 0.6
+        QCOMPARE(comb.tineCrossing({0.3, 0.37}, {0.3, 0.55}).value(), 13.0 / 18.0);  // y = 0.5, not 0.4
+        QCOMPARE(comb.tineCrossing({0.3, 0.7}, {0.3, 0.3}).value(), 0.5);     // y = 0.5, either way
+        QCOMPARE(comb.tineCrossing({0.3, 0.62}, {0.3, 0.38}).value(), 0.5);
+        QCOMPARE(comb.tineCrossing({0.3, 0.55}, {0.3, 0.8}).value(), 0.2);    // y = 0.6
+        QVERIFY(!comb.tineCrossing({0.3, 0.41}, {0.3, 0.49}));                // between two tines
+        QVERIFY(!comb.tineCrossing({0.3, 0.65}, {0.3, 0.9}));                 // beyond the last
+        QVERIFY(!comb.tineCrossing({0.1, 0.45}, {0.9, 0.45}));                // along the stroke
+    }
+
+    // The combed contour follows the mapped curve within the chord tolerance (1e-7 here), where a
+    // tine crosses it as well: the original polygon's edges, mapped finely, lie that near it.
+    void depictsTheMapWithinItsTolerance_data()
+    {
+        test::addBackendColumn();
+        QTest::addColumn<double>("tolerance");
+        QTest::newRow("reference") << u"reference"_qs << 1.01e-7;
+        QTest::newRow("opencl") << u"opencl"_qs << 4e-7;  // two float roundings at x = 1.3
+    }
+    void depictsTheMapWithinItsTolerance()
+    {
+        QFETCH(QString, backend);
+        QFETCH(double, tolerance);
+        VF_REQUIRE_BACKEND(backend);
+        auto simulation = stillWater(backend);
+        QCOMPARE(simulation->settings().tracking.chordTolerance, 1e-7);
+        simulation->addRegion({sim::circle({0.5, 0.5}, 0.2, simulation->settings().tracking.maxSpacing)});
+        const Polygon before = outlines(*simulation).front();
+        const Comb comb{{0.2, 0.5}, {0.5, 0.5}, 3, 0.15, 0.01};
+        QVERIFY(simulation->comb(comb));
+        const Polygon combed = outlines(*simulation).front();
+        Polygon finelyMapped;
+        for (std::size_t i = 0; i < before.size(); ++i)
+            for (int k = 0; k < 16; ++k)
+                finelyMapped.push_back(comb(glm::mix(before[i], before[(i + 1) % before.size()], k / 16.0)));
+        const double strayed = sim::directedHausdorffDistance(finelyMapped, combed);
+        QVERIFY2(strayed < tolerance, qPrintable(QString::number(strayed)));
+    }
+
+    // The map keeps areas exactly, and the contours depict it within the chord tolerance (1e-7 at
+    // the default d_max), at creases (the tines' lines) and between them: areas are kept to about
+    // that, and drawn back the comb returns the ink to within about seven times it (it shears up to
+    // tenfold across its tines). On the device, positions in float leave both a few times larger.
+    // Measured: area 1.3e-7 (reference) and 6.5e-7 (OpenCL); return 6.8e-7 and 2.4e-6.
     void keepsAreasAndIsUndone_data()
     {
         test::addBackendColumn();
         QTest::addColumn<bool>("areaCorrection");
-        QTest::addColumn<double>("areaTolerance");
+        QTest::addColumn<double>("returnTolerance");
         for (const QString& b : test::backendNames()) {
-            QTest::newRow(qPrintable(b + u" default"_qs)) << b << false << 1e-4;
-            QTest::newRow(qPrintable(b + u" area correction"_qs)) << b << true << 1e-6;
+            const double returnTolerance = b == u"reference"_qs ? 1e-6 : 3e-6;
+            QTest::newRow(qPrintable(b + u" default"_qs)) << b << false << returnTolerance;
+            QTest::newRow(qPrintable(b + u" area correction"_qs)) << b << true << returnTolerance;
         }
     }
     void keepsAreasAndIsUndone()
     {
         QFETCH(QString, backend);
         QFETCH(bool, areaCorrection);
-        QFETCH(double, areaTolerance);
+        QFETCH(double, returnTolerance);
         VF_REQUIRE_BACKEND(backend);
         auto simulation = stillWater(backend, areaCorrection);
         const double spacing = simulation->settings().tracking.maxSpacing;
@@ -134,14 +177,14 @@ private slots:
             moved = std::max(moved, sim::hausdorffDistance(combed[c], before[c]));
         }
         QVERIFY2(moved > 0.1, "the comb moved no ink");
-        QVERIFY2(worstArea < areaTolerance, qPrintable(QString::number(worstArea)));
+        QVERIFY2(worstArea < 1e-6, qPrintable(QString::number(worstArea)));
         QCOMPARE(crossings(combed), std::size_t(0));
         QVERIFY(simulation->comb(comb.inverse()));
         const std::vector<Polygon> undone = outlines(*simulation);
         double worstReturn = 0.0;
         for (std::size_t c = 0; c < before.size(); ++c)
             worstReturn = std::max(worstReturn, sim::hausdorffDistance(undone[c], before[c]));
-        QVERIFY2(worstReturn < 2e-3, qPrintable(QString::number(worstReturn)));
+        QVERIFY2(worstReturn < returnTolerance, qPrintable(QString::number(worstReturn)));
     }
 
     void twentyCombsCrossNothing_data() { test::addBackendRows(); }
