@@ -72,6 +72,59 @@ std::vector<Comb> twentyCombs()
     return combs;
 }
 
+struct Drop {
+    Vec2 centre;
+    double radius;
+};
+
+// The region at p after `drops` (in order) and then `combs`, found by pulling p back through the
+// inverse maps: the last drop whose disc it lands in, or -1 (no ink). Drop k is region k.
+int regionPulledBack(Vec2 p, const std::vector<Drop>& drops, const std::vector<Comb>& combs)
+{
+    for (auto comb = combs.rbegin(); comb != combs.rend(); ++comb)
+        p = comb->inverse()(p);
+    for (int k = int(drops.size()) - 1; k >= 0; --k) {
+        const Vec2 d = p - drops[k].centre;
+        const double r2 = drops[k].radius * drops[k].radius, l2 = glm::dot(d, d);
+        if (l2 < r2)
+            return k;
+        p = drops[k].centre + d * std::sqrt(1.0 - r2 / l2);  // the push undone
+    }
+    return -1;
+}
+
+// The region painted at each pixel centre of a size × size picture of the unit square: the last
+// region whose contours (even-odd) hold it, or -1. Row by row, from where the edges cross it.
+std::vector<int> pointSampled(const std::vector<sim::Contour>& contours, int regions, int size)
+{
+    std::vector<int> picture(std::size_t(size) * size, -1);
+    std::vector<std::vector<double>> crossings(regions);
+    for (int row = 0; row < size; ++row) {
+        const double y = (row + 0.5) / size;
+        for (auto& c : crossings)
+            c.clear();
+        for (const sim::Contour& c : contours)
+            for (std::size_t i = 0; i < c.positions.size(); ++i) {
+                const Vec2 a = c.positions[i], b = c.positions[(i + 1) % c.positions.size()];
+                if ((a.y > y) != (b.y > y))
+                    crossings[c.region].push_back(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
+            }
+        for (auto& c : crossings)
+            std::sort(c.begin(), c.end());
+        for (int column = 0; column < size; ++column) {
+            const double x = (column + 0.5) / size;
+            for (int r = regions - 1; r >= 0; --r) {
+                const auto left = std::lower_bound(crossings[r].begin(), crossings[r].end(), x) - crossings[r].begin();
+                if (left % 2 == 1) {
+                    picture[std::size_t(row) * size + column] = r;
+                    break;
+                }
+            }
+        }
+    }
+    return picture;
+}
+
 } // namespace
 
 class TestComb : public QObject {
@@ -185,6 +238,43 @@ private slots:
         for (std::size_t c = 0; c < before.size(); ++c)
             worstReturn = std::max(worstReturn, sim::hausdorffDistance(undone[c], before[c]));
         QVERIFY2(worstReturn < returnTolerance, qPrintable(QString::number(worstReturn)));
+    }
+
+    // Ground truth: drops and combs, all exact, pictured by pulling every pixel centre back through
+    // the inverse maps into the drops, agree with the contours sampled at the same pixel centres
+    // but for pixels on an edge: 0.0094 % disagree on both backends, measured (0.044 % with the
+    // maps depicted by the spacing alone, chordTolerance 0).
+    void matchesThePixelsPulledBack_data() { test::addBackendRows(); }
+    void matchesThePixelsPulledBack()
+    {
+        QFETCH(QString, backend);
+        VF_REQUIRE_BACKEND(backend);
+        auto simulation = stillWater(backend);
+        std::vector<Drop> drops;
+        std::mt19937 random(11);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        for (int k = 0; k < 12; ++k) {
+            drops.push_back({{0.2 + 0.6 * unit(random), 0.2 + 0.6 * unit(random)}, 0.05 + 0.07 * unit(random)});
+            QCOMPARE(simulation->drop(drops.back().centre, drops.back().radius).region, k);
+        }
+        const std::vector<Comb> combs{{{0.5, 0.1}, {0.5, 0.3}, 6, 0.15, 0.02},
+                                      {{0.1, 0.5}, {0.25, 0.5}, 9, 0.1, 0.01},
+                                      {{0.5, 0.8}, {0.5, 0.65}, 12, 0.08, 0.03}};
+        for (const Comb& comb : combs)
+            QVERIFY(simulation->comb(comb));
+        constexpr int size = 400;
+        const std::vector<int> sampled = pointSampled(simulation->contours(), simulation->regionCount(), size);
+        std::size_t differ = 0, inked = 0;
+        for (int row = 0; row < size; ++row)
+            for (int column = 0; column < size; ++column) {
+                const int truth = regionPulledBack({(column + 0.5) / size, (row + 0.5) / size}, drops, combs);
+                differ += truth != sampled[std::size_t(row) * size + column];
+                inked += truth >= 0;
+            }
+        QVERIFY2(inked > size * size / 4, "too little ink to compare");
+        const double share = double(differ) / (size * size);
+        qInfo("%.4f %% of the pixels differ", 100.0 * share);
+        QVERIFY2(share <= 2e-4, qPrintable(QString::number(share)));
     }
 
     void twentyCombsCrossNothing_data() { test::addBackendRows(); }
