@@ -165,10 +165,28 @@ std::vector<StartingRegion> startingRegions(const RegionSpec& region, double max
     return regions;
 }
 
+sim::Comb CombStroke::map() const
+{
+    return {from, to, tines, spacing, sharpness, amplitude, wavelength, phase * std::numbers::pi / 180.0};
+}
+
 StylusStroke CombStroke::tineStroke(int k) const
 {
-    const sim::Vec2 start = map().tineStart(k);
-    return StylusStroke{radius, {start, start + (to - from)}, {time, time + duration}};
+    const sim::Comb comb = map();
+    const sim::Vec2 start = comb.tineStart(k), stroke = to - from;
+    const double length = glm::length(stroke);
+    const int pieces = amplitude > 0.0 && length > 0.0
+                           ? std::clamp(int(std::ceil(16.0 * length / wavelength)), 1, wavePoints - 1)
+                           : 1;
+    const sim::Vec2 across = length > 0.0 ? sim::Vec2(-stroke.y, stroke.x) / length : sim::Vec2(0.0);
+    StylusStroke path{radius, {}, {}};
+    for (int i = 0; i <= pieces; ++i) {
+        const double s = double(i) / pieces, t = (s - 0.5) * length;
+        path.points.push_back(start + s * stroke +
+                              amplitude * std::sin(2.0 * std::numbers::pi * t / wavelength + comb.phase) * across);
+        path.times.push_back(time + s * duration);
+    }
+    return path;
 }
 
 } // namespace vf::model

@@ -140,6 +140,7 @@ struct DropStroke {
 
 // A comb (rake) drawn across the tray at `time`: exactly, as the map of sim/Comb.h applied to the
 // ink at once, or in the water, as one stylus per tine moving together for `duration` seconds.
+// With an amplitude its tines are waves (sim/Comb.h), which in the water they trace.
 struct CombStroke {
     enum class Mode { Water, Exact };
     Mode mode = Mode::Water;
@@ -150,10 +151,15 @@ struct CombStroke {
     double sharpness = 0.02;  // exact: u of the map, canvas units
     double duration = 0.5;    // water: seconds the tines take from `from` to `to`
     double radius = 0.03;     // water: each tine's stylus radius
+    double amplitude = 0.0;   // of the tines' wave across the stroke, canvas units; 0: straight
+    double wavelength = 0.2;  // of the wave, canvas units along the stroke
+    double phase = 0.0;       // of the wave at the stroke's middle, degrees
 
-    sim::Comb map() const { return {from, to, tines, spacing, sharpness}; }
-    // Water: the path of tine k, as a stylus stroke.
+    sim::Comb map() const;
+    // Water: the path of tine k, as a stylus stroke (along its wave: 16 points a wavelength, at
+    // most wavePoints).
     StylusStroke tineStroke(int k) const;
+    static constexpr int wavePoints = 256;
     friend bool operator==(const CombStroke&, const CombStroke&) = default;
 };
 

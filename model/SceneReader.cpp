@@ -273,6 +273,9 @@ const Key<CombStroke> combKeys[] = {
     {u"sharpness"_s, false, [](const Field& f, CombStroke& c) { c.sharpness = length(f); }},
     {u"duration"_s, false, [](const Field& f, CombStroke& c) { c.duration = f.positive(kHuge); }},
     {u"radius"_s, false, [](const Field& f, CombStroke& c) { c.radius = length(f); }},
+    {u"amplitude"_s, false, [](const Field& f, CombStroke& c) { c.amplitude = f.number(0.0, limits::maxCanvasSize); }},
+    {u"wavelength"_s, false, [](const Field& f, CombStroke& c) { c.wavelength = length(f); }},
+    {u"phase"_s, false, [](const Field& f, CombStroke& c) { c.phase = f.number(-360.0, 360.0); }},
 };
 
 Stroke readStroke(const Field& field)

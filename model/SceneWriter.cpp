@@ -127,6 +127,11 @@ QJsonObject toJson(const CombStroke& c)
         comb.insert(u"duration"_s, c.duration);
         comb.insert(u"radius"_s, c.radius);
     }
+    if (c.amplitude > 0.0) {
+        comb.insert(u"amplitude"_s, c.amplitude);
+        comb.insert(u"wavelength"_s, c.wavelength);
+        comb.insert(u"phase"_s, c.phase);
+    }
     return comb;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace vf::sim {
 
@@ -24,6 +25,15 @@ Vec2 Comb::tineStart(int k) const
     return from + (double(k) - 0.5 * double(tines - 1)) * spacing * across;
 }
 
+Vec2 Comb::waved(Vec2 p, double sign) const
+{
+    if (amplitude == 0.0)
+        return p;
+    const Vec2 along = glm::normalize(to - from);
+    const double t = glm::dot(p - 0.5 * (from + to), along);
+    return p + sign * amplitude * std::sin(2.0 * std::numbers::pi * t / wavelength + phase) * quarterTurn(along);
+}
+
 std::optional<double> Comb::tineCrossing(Vec2 a, Vec2 b) const
 {
     const Vec2 stroke = to - from;
@@ -33,7 +43,8 @@ std::optional<double> Comb::tineCrossing(Vec2 a, Vec2 b) const
     // Across the stroke in tine spacings from tine 0, so that tine k lies at k.
     const Vec2 across = quarterTurn(stroke / length);
     const double unit = spacing > 0.0 ? spacing : 1.0, last = spacing > 0.0 ? double(tines - 1) : 0.0;
-    const double wa = glm::dot(a - tineStart(0), across) / unit, wb = glm::dot(b - tineStart(0), across) / unit;
+    const double wa = glm::dot(waved(a, -1.0) - tineStart(0), across) / unit;
+    const double wb = glm::dot(waved(b, -1.0) - tineStart(0), across) / unit;
     // The tines strictly between a and b: from the first whole number above the lower end to the
     // last below the upper one.
     const double first = std::max(std::floor(std::min(wa, wb)) + 1.0, 0.0);
@@ -51,12 +62,13 @@ Vec2 Comb::operator()(Vec2 p) const
     if (!(length > 0.0))
         return p;
     const Vec2 along = stroke / length, across = quarterTurn(along);
+    const Vec2 straight = waved(p, -1.0);
     double shift = 0.0;
     for (int k = 0; k < tines; ++k) {
-        const double d = std::abs(glm::dot(p - tineStart(k), across));
+        const double d = std::abs(glm::dot(straight - tineStart(k), across));
         shift += length * sharpness / (d + sharpness);
     }
-    return p + shift * along;
+    return waved(straight + shift * along, 1.0);
 }
 
 } // namespace vf::sim

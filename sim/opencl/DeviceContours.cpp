@@ -24,6 +24,7 @@
 #include <bit>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -41,7 +42,7 @@ constexpr std::size_t minCapacity = std::size_t(1) << 14;
 // MOTION_ARGS of contours.cl: how vertices move in this step, and where split vertices go.
 struct Motion {
     cl_int kind = motionFlow;  // RK4 through the flow, the drop's push or a comb
-    cl_float4 a{}, b{};        // the map's parameters (contours.cl, MOTION_ARGS)
+    cl_float4 a{}, b{}, c{};   // the map's parameters (contours.cl, MOTION_ARGS)
     cl_int rewind = 1;         // TrackingSettings::timeRewinding
     cl_float chordTolerance = 0.0f;  // a map's, ExactMotion's (none for the flow)
 };
@@ -51,6 +52,7 @@ void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Motion& motion)
     kernel.setArg(index++, motion.kind);
     kernel.setArg(index++, motion.a);
     kernel.setArg(index++, motion.b);
+    kernel.setArg(index++, motion.c);
     kernel.setArg(index++, motion.rewind);
     kernel.setArg(index++, motion.chordTolerance);
 }
@@ -170,10 +172,10 @@ struct DeviceContours::Impl {
     void reserveContours(std::size_t needed);
     std::size_t tiles() const { return roundUpToLocal(vertices + 1) / localSize; }
     Grid grid() const;
-    Motion flowMotion() const { return Motion{motionFlow, {}, {}, cl_int(settings.timeRewinding)}; }
-    Motion mapMotion(cl_int kind, cl_float4 a, cl_float4 b) const
+    Motion flowMotion() const { return Motion{motionFlow, {}, {}, {}, cl_int(settings.timeRewinding)}; }
+    Motion mapMotion(cl_int kind, cl_float4 a, cl_float4 b, cl_float4 c = {}) const
     {
-        return Motion{kind, a, b, cl_int(settings.timeRewinding), cl_float(settings.chordTolerance)};
+        return Motion{kind, a, b, c, cl_int(settings.timeRewinding), cl_float(settings.chordTolerance)};
     }
 
     bool move(const FlowBinding& flow, const Motion& motion, bool startKnown = false);
@@ -870,9 +872,13 @@ bool DeviceContours::comb(const Comb& comb, const FlowBinding& flow)
         if (!(length > 0.0) || comb.tines < 1 || m->vertices == 0)
             return true;
         const Vec2 along = stroke / length;
+        // The wave's phase at the origin: t is measured from the stroke's middle.
+        const double waveNumber = 2.0 * std::numbers::pi / comb.wavelength;
+        const double phase = comb.phase - waveNumber * glm::dot(0.5 * (comb.from + comb.to), along);
         return m->move(flow, m->mapMotion(motionComb,
                                           {{cl_float(comb.from.x), cl_float(comb.from.y), cl_float(along.x), cl_float(along.y)}},
-                                          {{cl_float(length), cl_float(comb.sharpness), cl_float(comb.spacing), cl_float(comb.tines)}}));
+                                          {{cl_float(length), cl_float(comb.sharpness), cl_float(comb.spacing), cl_float(comb.tines)}},
+                                          {{cl_float(comb.amplitude), cl_float(waveNumber), cl_float(phase), 0.0f}}));
     });
 }
 

@@ -21,12 +21,12 @@ typedef VF_ACC4 acc4;
 // How vertices move in this step: through the flow from t0 to t1 (RK4, motionKind MOTION_FLOW), by
 // an ink drop's push (MOTION_DROP: mapA is the centre and the radius) or by a comb (MOTION_COMB:
 // mapA is `from` and the unit direction M, mapB the length z, the sharpness, the spacing and the
-// tine count; sim/Comb.h). `rewind` is TrackingSettings::timeRewinding: where a split vertex goes
+// tine count, mapC the wave: amplitude, 2π/wavelength and the phase at the origin; sim/Comb.h). `rewind` is TrackingSettings::timeRewinding: where a split vertex goes
 // (eq. 2 or the chord). A map is depicted within `chordTolerance` (ExactMotion in
 // sim/ContourTracker.h; 0 for the flow). MOTION_*, STATUS_*, FLAG_* and TERMS_* are defined by the
 // host as build options (ContourCodes.h).
-#define MOTION_ARGS int motionKind, float4 mapA, float4 mapB, int rewind, float chordTolerance
-#define MOTION_PASS motionKind, mapA, mapB, rewind, chordTolerance
+#define MOTION_ARGS int motionKind, float4 mapA, float4 mapB, float4 mapC, int rewind, float chordTolerance
+#define MOTION_PASS motionKind, mapA, mapB, mapC, rewind, chordTolerance
 
 // Words of the status buffer the host reads once per pass. Flags are raised with atomic_or, the
 // strain with atomic_max on the bits of a non-negative float: both results are independent of the
@@ -105,23 +105,34 @@ VF_INLINE float2 dropPush(float2 centre, float radius, float2 p)
     return centre + d * sqrt(1.0f + radius * radius / l2);
 }
 
-// The comb's shear along M (sim/Comb.cpp): z·u/(d + u) for each tine, d the distance to its line.
-VF_INLINE float2 combShift(float4 line, float4 shape, float2 p)
+// A wavy comb's wave at p, across the stroke: sign −1 waves the plane, +1 unwaves it.
+VF_INLINE float2 combWaved(float4 line, float4 wave, float2 p, float sign)
+{
+    const float2 along = line.zw;
+    return p + sign * wave.x * sin(wave.y * dot(p, along) + wave.z) * (float2)(-along.y, along.x);
+}
+
+// The comb's map (sim/Comb.cpp): waved, sheared along M by z·u/(d + u) for each tine, d the
+// distance to its line, and unwaved.
+VF_INLINE float2 combShift(float4 line, float4 shape, float4 wave, float2 p)
 {
     const float2 from = line.xy, along = line.zw, across = (float2)(-along.y, along.x);
+    const float2 straight = combWaved(line, wave, p, -1.0f);
     const int tines = (int)shape.w;
     float shift = 0.0f;
     for (int k = 0; k < tines; ++k) {
         const float2 tine = from + ((float)k - 0.5f * (float)(tines - 1)) * shape.z * across;
-        shift += shape.x * shape.y / (fabs(dot(p - tine, across)) + shape.y);
+        shift += shape.x * shape.y / (fabs(dot(straight - tine, across)) + shape.y);
     }
-    return p + shift * along;
+    return combWaved(line, wave, straight + shift * along, 1.0f);
 }
 
 // Comb::tineCrossing: where the segment a–b crosses a tine's line (the crossing nearest its middle),
 // as a fraction along it, or -1.
-VF_INLINE float tineCrossing(float4 line, float4 shape, float2 a, float2 b)
+VF_INLINE float tineCrossing(float4 line, float4 shape, float4 wave, float2 a, float2 b)
 {
+    a = combWaved(line, wave, a, -1.0f);
+    b = combWaved(line, wave, b, -1.0f);
     const float2 across = (float2)(-line.w, line.z);
     const int tines = (int)shape.w;
     const float unit = shape.z > 0.0f ? shape.z : 1.0f, last = shape.z > 0.0f ? (float)(tines - 1) : 0.0f;
@@ -136,7 +147,7 @@ VF_INLINE float tineCrossing(float4 line, float4 shape, float2 a, float2 b)
 // Where a map (a drop or a comb, not the flow) takes `start`.
 VF_INLINE float2 mapped(MOTION_ARGS, float2 start)
 {
-    return motionKind == MOTION_DROP ? dropPush(mapA.xy, mapA.z, start) : combShift(mapA, mapB, start);
+    return motionKind == MOTION_DROP ? dropPush(mapA.xy, mapA.z, start) : combShift(mapA, mapB, mapC, start);
 }
 
 // Whether a map is depicted within its chord tolerance (the flow is not).
@@ -166,7 +177,7 @@ VF_INLINE float splitPoint(MOTION_ARGS, float4 left, float4 right, bool tooLong)
     if (!depictedExactly(MOTION_PASS))
         return tooLong ? 0.5f : -1.0f;
     if (motionKind == MOTION_COMB) {
-        const float s = tineCrossing(mapA, mapB, left.zw, right.zw);
+        const float s = tineCrossing(mapA, mapB, mapC, left.zw, right.zw);
         if (s >= 0.0f && straysFrom(MOTION_PASS, mapped(MOTION_PASS, mix(left.zw, right.zw, s)), left.xy, right.xy))
             return s;
     }

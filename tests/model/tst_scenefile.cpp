@@ -79,6 +79,8 @@ Scene richScene()
     s.strokes.push_back(CombStroke{CombStroke::Mode::Water, 0.7, {0.1, 0.2}, {0.9, 0.2 + 1e-12}, 7, 1.0 / 30.0,
                                    0.02, 0.75, 0.011});
     s.strokes.push_back(CombStroke{CombStroke::Mode::Exact, 0.0, {0.5, 0.1}, {0.5, 0.9}, 1, 0.0, 1.0 / 3.0, 0.5, 0.03});
+    s.strokes.push_back(CombStroke{CombStroke::Mode::Water, 0.2, {0.1, 0.9}, {0.7, 0.3}, 5, 0.05, 0.02, 0.3, 0.01,
+                                   1.0 / 7.0, 0.3, -45.5});
     return s;
 }
 

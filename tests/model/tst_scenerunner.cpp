@@ -4,6 +4,11 @@
 
 #include <QTest>
 
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <numbers>
+
 using namespace vf;
 using namespace vf::model;
 
@@ -93,6 +98,25 @@ private slots:
         // The tines are spaced across the stroke, centred on it.
         QCOMPARE(rake.tineStroke(0).points[0], sim::Vec2(0.6, 0.2));
         QCOMPARE(rake.tineStroke(2).points[1], sim::Vec2(0.4, 0.8));
+    }
+
+    // A wavy comb's tines in the water trace their waves: 16 points a wavelength, the middle one
+    // as far across as the wave's phase puts it, the ends at the stroke's ends and times.
+    void wavyTinesTraceTheirWaves()
+    {
+        const CombStroke rake{CombStroke::Mode::Water, 0.5, {0.5, 0.2}, {0.5, 0.8}, 3, 0.1, 0.02, 0.25, 0.02, 0.05, 0.1385, 30.0};
+        const StylusStroke tine = rake.tineStroke(1);
+        QCOMPARE(tine.points.size(), std::size_t(71));  // 0.6 long: 4.33 wavelengths, 69.3 pieces
+        QCOMPARE(tine.times.front(), 0.5);
+        QCOMPARE(tine.times.back(), 0.75);
+        // n is M (up the tray) turned +90°: toward −x.
+        QVERIFY(glm::distance(tine.points[35], sim::Vec2(0.5 - 0.05 * 0.5, 0.5)) < 1e-12);
+        const double startPhase = 2.0 * std::numbers::pi * -0.3 / 0.1385 + std::numbers::pi / 6.0;
+        QVERIFY(glm::distance(tine.points.front(), sim::Vec2(0.5 - 0.05 * std::sin(startPhase), 0.2)) < 1e-12);
+        // A wave of a thousand wavelengths keeps to wavePoints.
+        CombStroke fine = rake;
+        fine.wavelength = 0.0006;
+        QCOMPARE(fine.tineStroke(0).points.size(), std::size_t(CombStroke::wavePoints));
     }
 
     void pictureCarriesTheSceneLook()
