@@ -70,7 +70,7 @@ bool SceneScript::applyCombs(sim::Simulation& simulation, double from, double to
     bool limitReached = false;
     for (const CombStroke& comb : m_combs)
         if (comb.time > from && comb.time <= to)
-            limitReached = !simulation.comb(comb.map()) || limitReached;
+            limitReached = !simulation.applyMap(comb.map()) || limitReached;
     return limitReached;
 }
 

@@ -45,14 +45,7 @@ std::optional<double> Comb::tineCrossing(Vec2 a, Vec2 b) const
     const double unit = spacing > 0.0 ? spacing : 1.0, last = spacing > 0.0 ? double(tines - 1) : 0.0;
     const double wa = glm::dot(waved(a, -1.0) - tineStart(0), across) / unit;
     const double wb = glm::dot(waved(b, -1.0) - tineStart(0), across) / unit;
-    // The tines strictly between a and b: from the first whole number above the lower end to the
-    // last below the upper one.
-    const double first = std::max(std::floor(std::min(wa, wb)) + 1.0, 0.0);
-    const double final = std::min(std::ceil(std::max(wa, wb)) - 1.0, last);
-    if (!(first <= final))
-        return std::nullopt;
-    const double tine = std::clamp(std::round(0.5 * (wa + wb)), first, final);
-    return (tine - wa) / (wb - wa);
+    return wholeCrossing(wa, wb, last);
 }
 
 Vec2 Comb::operator()(Vec2 p) const

@@ -378,10 +378,11 @@ bool ContourTracker::drop(const DropPush& push, const Flow& flow, double t)
     return applyMotion({push, {}, m_settings.chordTolerance}, flow, t);
 }
 
-bool ContourTracker::comb(const Comb& comb, const Flow& flow, double t)
+bool ContourTracker::applyMap(const ExactMap& map, const Flow& flow, double t)
 {
-    const auto crossing = [comb](Vec2 a, Vec2 b) { return comb.tineCrossing(a, b); };
-    return applyMotion({comb, crossing, m_settings.chordTolerance}, flow, t);
+    return applyMotion({[&map](Vec2 p) { return mapped(map, p); },
+                        [&map](Vec2 a, Vec2 b) { return creaseCrossing(map, a, b); }, m_settings.chordTolerance},
+                       flow, t);
 }
 
 bool ContourTracker::applyMotion(const ExactMotion& motion, const Flow& flow, double t)

@@ -1,8 +1,8 @@
 #pragma once
 // Lagrangian contour tracking (paper §3.1, §3.3): RK4 advection (eq. 1), refinement by the
 // time-rewinding split (eq. 2) and collapse, adaptive spacing, optional area correction.
-#include "sim/Comb.h"
 #include "sim/Drop.h"
+#include "sim/ExactMap.h"
 #include "sim/Flow.h"
 #include "sim/PhaseClock.h"
 #include "sim/ProximityGrid.h"
@@ -52,10 +52,11 @@ public:
     // max_vertices; the contours are then valid but may have edges longer than d_i.
     bool advect(const Flow& flow, double t, double dt);
 
-    // Moves every vertex by an ink drop's push or a comb, depicted exactly (ExactMotion, within the
-    // settings' chord tolerance), and refines; `flow` and `t` feed the spacing's vorticity term.
+    // Moves every vertex by an ink drop's push or a tool's map, depicted exactly (ExactMotion,
+    // within the settings' chord tolerance), and refines; `flow` and `t` feed the spacing's
+    // vorticity term.
     bool drop(const DropPush& push, const Flow& flow, double t);
-    bool comb(const Comb& comb, const Flow& flow, double t);
+    bool applyMap(const ExactMap& map, const Flow& flow, double t);
 
     // Raises the area-correction target of every contour winding around `p` by `area` per turn:
     // an ink drop landing inside a contour makes it enclose the drop as well.

@@ -126,6 +126,16 @@ double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b)
     return glm::dot(d, d);
 }
 
+std::optional<double> wholeCrossing(double wa, double wb, double last)
+{
+    // From the first whole number above the lower end to the last below the upper one.
+    const double first = std::max(std::floor(std::min(wa, wb)) + 1.0, 0.0);
+    const double final = std::min(std::ceil(std::max(wa, wb)) - 1.0, last);
+    if (!(first <= final))
+        return std::nullopt;
+    return (std::clamp(std::round(0.5 * (wa + wb)), first, final) - wa) / (wb - wa);
+}
+
 double directedHausdorffDistance(const Polygon& from, const Polygon& to)
 {
     double worst = 0.0;

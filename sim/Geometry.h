@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace vf::sim {
@@ -40,6 +41,10 @@ Polygon resample(const Polygon& polygon, double maxSpacing);
 Polygon circle(Vec2 center, double radius, double maxSpacing);
 
 double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b);
+// Where w, linear from wa to wb over [0, 1], passes strictly a whole number in [0, last], the one
+// nearest the middle, as the fraction there: where a segment crosses one of a map's creases
+// (a comb's tines, numbered by w).
+std::optional<double> wholeCrossing(double wa, double wb, double last);
 // Largest distance from a vertex of `from` to the closed polyline `to`.
 double directedHausdorffDistance(const Polygon& from, const Polygon& to);
 // Symmetric Hausdorff distance between two closed polylines (vertex-to-segment, both ways).

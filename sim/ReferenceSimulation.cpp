@@ -38,9 +38,9 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
     return m_regionCount++;
 }
 
-bool ReferenceSimulation::comb(const Comb& comb)
+bool ReferenceSimulation::applyMap(const ExactMap& map)
 {
-    return m_tracker.comb(comb, *m_flow, time());
+    return m_tracker.applyMap(map, *m_flow, time());
 }
 
 bool ReferenceSimulation::pushOutward(Vec2 center, double radius)

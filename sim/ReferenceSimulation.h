@@ -18,7 +18,7 @@ public:
     std::string backendName() const override { return "reference"; }
     const SimulationSettings& settings() const override { return m_settings; }
     int addRegion(const std::vector<Polygon>& contours) override;
-    bool comb(const Comb& comb) override;
+    bool applyMap(const ExactMap& map) override;
     void stylus(Vec2 from, Vec2 to, double radius, double duration) override;
     StepReport step(double dt) override;
     double time() const override { return m_flow->time(); }

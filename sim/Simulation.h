@@ -1,7 +1,7 @@
 #pragma once
 // The backend interface: one live simulation of contours in a flow. The reference backend (plain
 // double-precision C++) is always built; an OpenCL backend implements the same interface.
-#include "sim/Comb.h"
+#include "sim/ExactMap.h"
 #include "sim/FluidSolver.h"
 #include "sim/Geometry.h"
 #include "sim/PhaseClock.h"
@@ -60,10 +60,10 @@ public:
     // region, whose index is returned. Regions are painted in order, so ink the drop lands in
     // shows as a ring around it: its contour then encloses the drop too (area + π r²).
     DropReport drop(Vec2 center, double radius);
-    // The comb's exact map (sim/Comb.h) applied to every contour at once, with refinement as the
-    // flow's (split vertices land on the mapped curve); the fluid is untouched. False when
-    // refinement stopped at max_vertices.
-    virtual bool comb(const Comb& comb) = 0;
+    // A tool's exact map (sim/ExactMap.h: a comb, a circular comb, a swirl) applied to every
+    // contour at once and depicted within tracking.chordTolerance; the fluid is untouched. False
+    // when refinement stopped at max_vertices.
+    virtual bool applyMap(const ExactMap& map) = 0;
     // The stylus moved from `from` to `to` during `duration` seconds; acts during the next step.
     // Only a fluid flow responds.
     virtual void stylus(Vec2 from, Vec2 to, double radius, double duration) = 0;

@@ -16,7 +16,7 @@ constexpr cl_uint flagNonFinite = 1, flagSplitMismatch = 2;  // sticky
 constexpr cl_uint flagShortEdge0 = 1, flagsShortEdge = 7 * flagShortEdge0, flagRecentred = 8, flagSplitCapped = 16;
 // The modes of contourTermTiles and contourTermSums (contours_area.cl) and of the motion.
 enum : cl_int { termsArea = 0, termsWinding = 1 };
-enum : cl_int { motionFlow = 0, motionDrop = 1, motionComb = 2 };
+enum : cl_int { motionFlow = 0, motionDrop = 1, motionComb = 2, motionCircularComb = 3, motionSwirl = 4 };
 
 // As build options, -DNAME=VALUE for each of the names the kernels use.
 inline std::string contourCodeDefinitions()
@@ -38,7 +38,9 @@ inline std::string contourCodeDefinitions()
                                 {"TERMS_WINDING", termsWinding, ""},
                                 {"MOTION_FLOW", motionFlow, ""},
                                 {"MOTION_DROP", motionDrop, ""},
-                                {"MOTION_COMB", motionComb, ""}};
+                                {"MOTION_COMB", motionComb, ""},
+                                {"MOTION_CIRCULAR_COMB", motionCircularComb, ""},
+                                {"MOTION_SWIRL", motionSwirl, ""}};
     std::string options;
     for (const Definition& d : table)
         options += std::string(" -D") + d.name + "=" + std::to_string(d.value) + d.suffix;

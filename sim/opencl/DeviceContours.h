@@ -3,7 +3,7 @@
 // (eq. 1), adaptive spacing (eqs. 3–7) with a counting-sort proximity grid and Gaussian smoothing
 // along contours, refinement by the time-rewinding split (eq. 2) and collapse, kept contiguous
 // and ordered by stream compaction, the optional area correction, and ink drops.
-#include "sim/Comb.h"
+#include "sim/ExactMap.h"
 #include "sim/Simulation.h"
 #include "sim/Tracking.h"
 #include "sim/opencl/Device.h"
@@ -54,8 +54,8 @@ public:
     // when a cut was made. Returns how many cuts were made.
     std::size_t cutPinches();
 
-    // The comb's exact map (sim/Comb.h) as the motion, then refinement, as drop().
-    bool comb(const Comb& comb, const FlowBinding& flow);
+    // A tool's exact map (sim/ExactMap.h) as the motion, then refinement, as drop().
+    bool applyMap(const ExactMap& map, const FlowBinding& flow);
 
     std::size_t vertexCount() const;  // known on the host after every step (one scalar read)
 

@@ -26,7 +26,7 @@ public:
     std::size_t hardwareVertexLimit() const override { return m_contours->deviceVertexLimit(); }
     const SimulationSettings& settings() const override { return m_settings; }
     int addRegion(const std::vector<Polygon>& contours) override;
-    bool comb(const Comb& comb) override { return m_contours->comb(comb, binding(m_time, m_time)); }
+    bool applyMap(const ExactMap& map) override { return m_contours->applyMap(map, binding(m_time, m_time)); }
     void stylus(Vec2 from, Vec2 to, double radius, double duration) override;
     StepReport step(double dt) override;
     double time() const override { return m_time; }

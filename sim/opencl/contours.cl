@@ -19,12 +19,12 @@ typedef VF_ACC4 acc4;
     __global const uint *contourOf, __global const uint *contourOffset, __global const uint *contourCount
 
 // How vertices move in this step: through the flow from t0 to t1 (RK4, motionKind MOTION_FLOW), by
-// an ink drop's push (MOTION_DROP: mapA is the centre and the radius) or by a comb (MOTION_COMB:
-// mapA is `from` and the unit direction M, mapB the length z, the sharpness, the spacing and the
-// tine count, mapC the wave: amplitude, 2π/wavelength and the phase at the origin; sim/Comb.h). `rewind` is TrackingSettings::timeRewinding: where a split vertex goes
-// (eq. 2 or the chord). A map is depicted within `chordTolerance` (ExactMotion in
-// sim/ContourTracker.h; 0 for the flow). MOTION_*, STATUS_*, FLAG_* and TERMS_* are defined by the
-// host as build options (ContourCodes.h).
+// an ink drop's push (MOTION_DROP: mapA is the centre and the radius), or by a tool's map
+// (MOTION_COMB, MOTION_CIRCULAR_COMB, MOTION_SWIRL: mapA to mapC its parameters, below).
+// `rewind` is TrackingSettings::timeRewinding: where a split vertex goes (eq. 2 or the chord). A
+// map is depicted within `chordTolerance` (ExactMotion in sim/ContourTracker.h; 0 for the flow).
+// MOTION_*, STATUS_*, FLAG_* and TERMS_* are defined by the host as build options
+// (ContourCodes.h).
 #define MOTION_ARGS int motionKind, float4 mapA, float4 mapB, float4 mapC, int rewind, float chordTolerance
 #define MOTION_PASS motionKind, mapA, mapB, mapC, rewind, chordTolerance
 
@@ -105,6 +105,8 @@ VF_INLINE float2 dropPush(float2 centre, float radius, float2 p)
     return centre + d * sqrt(1.0f + radius * radius / l2);
 }
 
+// sim::Comb: mapA is `from` and the unit direction M, mapB the length z, the sharpness, the
+// spacing and the tine count, mapC the wave: amplitude, 2π/wavelength and the phase at the origin.
 // A wavy comb's wave at p, across the stroke: sign −1 waves the plane, +1 unwaves it.
 VF_INLINE float2 combWaved(float4 line, float4 wave, float2 p, float sign)
 {
@@ -127,6 +129,16 @@ VF_INLINE float2 combShift(float4 line, float4 shape, float4 wave, float2 p)
     return combWaved(line, wave, straight + shift * along, 1.0f);
 }
 
+// sim::wholeCrossing: where w, linear from wa to wb, passes strictly a whole number in [0, last],
+// the one nearest the middle, as the fraction there, or -1.
+VF_INLINE float wholeCrossing(float wa, float wb, float last)
+{
+    const float first = fmax(floor(fmin(wa, wb)) + 1.0f, 0.0f), final = fmin(ceil(fmax(wa, wb)) - 1.0f, last);
+    if (!(first <= final))
+        return -1.0f;
+    return (clamp(rint(0.5f * (wa + wb)), first, final) - wa) / (wb - wa);
+}
+
 // Comb::tineCrossing: where the segment a–b crosses a tine's line (the crossing nearest its middle),
 // as a fraction along it, or -1.
 VF_INLINE float tineCrossing(float4 line, float4 shape, float4 wave, float2 a, float2 b)
@@ -137,17 +149,63 @@ VF_INLINE float tineCrossing(float4 line, float4 shape, float4 wave, float2 a, f
     const int tines = (int)shape.w;
     const float unit = shape.z > 0.0f ? shape.z : 1.0f, last = shape.z > 0.0f ? (float)(tines - 1) : 0.0f;
     const float2 firstTine = line.xy - 0.5f * (float)(tines - 1) * shape.z * across;
-    const float wa = dot(a - firstTine, across) / unit, wb = dot(b - firstTine, across) / unit;
-    const float first = fmax(floor(fmin(wa, wb)) + 1.0f, 0.0f), final = fmin(ceil(fmax(wa, wb)) - 1.0f, last);
-    if (!(first <= final))
-        return -1.0f;
-    return (clamp(rint(0.5f * (wa + wb)), first, final) - wa) / (wb - wa);
+    return wholeCrossing(dot(a - firstTine, across) / unit, dot(b - firstTine, across) / unit, last);
 }
 
-// Where a map (a drop or a comb, not the flow) takes `start`.
+// p turned about `centre` by `angle`.
+VF_INLINE float2 turned(float2 p, float2 centre, float angle)
+{
+    const float c = cos(angle), s = sin(angle);
+    const float2 d = p - centre;
+    return centre + (float2)(c * d.x - s * d.y, s * d.x + c * d.y);
+}
+
+// sim::CircularComb (sim/Whirl.h): mapA is the centre, the first tine's radius and the spacing,
+// mapB the angle, the sharpness and the tine count.
+VF_INLINE float2 circularComb(float4 rings, float4 pull, float2 p)
+{
+    const float rho = distance(p, rings.xy);
+    float theta = 0.0f;
+    for (int k = 0; k < (int)pull.z; ++k)
+        theta += pull.x * pull.y / (fabs(rho - (rings.z + (float)k * rings.w)) + pull.y);
+    return turned(p, rings.xy, theta);
+}
+
+// CircularComb::tineCrossing: where the segment a–b crosses a tine's circle, ρ taken as linear.
+VF_INLINE float ringCrossing(float4 rings, float4 pull, float2 a, float2 b)
+{
+    const float unit = rings.w > 0.0f ? rings.w : 1.0f, last = rings.w > 0.0f ? pull.z - 1.0f : 0.0f;
+    return wholeCrossing((distance(a, rings.xy) - rings.z) / unit, (distance(b, rings.xy) - rings.z) / unit, last);
+}
+
+// sim::Swirl: mapA is the centre, the radius and the angle.
+VF_INLINE float2 swirl(float4 vortex, float2 p)
+{
+    const float rho = distance(p, vortex.xy) / vortex.z;
+    return turned(p, vortex.xy, vortex.w * exp(-rho * rho));
+}
+
+// Where a map (a drop or a tool's, not the flow) takes `start`.
 VF_INLINE float2 mapped(MOTION_ARGS, float2 start)
 {
-    return motionKind == MOTION_DROP ? dropPush(mapA.xy, mapA.z, start) : combShift(mapA, mapB, mapC, start);
+    switch (motionKind) {
+    case MOTION_DROP:
+        return dropPush(mapA.xy, mapA.z, start);
+    case MOTION_COMB:
+        return combShift(mapA, mapB, mapC, start);
+    case MOTION_CIRCULAR_COMB:
+        return circularComb(mapA, mapB, start);
+    default:
+        return swirl(mapA, start);
+    }
+}
+
+// Where the segment a–b crosses a crease of the map, as a fraction along it, or -1.
+VF_INLINE float creaseCrossing(MOTION_ARGS, float2 a, float2 b)
+{
+    if (motionKind == MOTION_COMB)
+        return tineCrossing(mapA, mapB, mapC, a, b);
+    return motionKind == MOTION_CIRCULAR_COMB ? ringCrossing(mapA, mapB, a, b) : -1.0f;
 }
 
 // Whether a map is depicted within its chord tolerance (the flow is not).
@@ -176,11 +234,9 @@ VF_INLINE float splitPoint(MOTION_ARGS, float4 left, float4 right, bool tooLong)
 {
     if (!depictedExactly(MOTION_PASS))
         return tooLong ? 0.5f : -1.0f;
-    if (motionKind == MOTION_COMB) {
-        const float s = tineCrossing(mapA, mapB, mapC, left.zw, right.zw);
-        if (s >= 0.0f && straysFrom(MOTION_PASS, mapped(MOTION_PASS, mix(left.zw, right.zw, s)), left.xy, right.xy))
-            return s;
-    }
+    const float s = creaseCrossing(MOTION_PASS, left.zw, right.zw);
+    if (s >= 0.0f && straysFrom(MOTION_PASS, mapped(MOTION_PASS, mix(left.zw, right.zw, s)), left.xy, right.xy))
+        return s;
     return tooLong || straysFrom(MOTION_PASS, mapped(MOTION_PASS, 0.5f * (left.zw + right.zw)), left.xy, right.xy)
                ? 0.5f
                : -1.0f;

@@ -66,7 +66,7 @@ private slots:
         }
         QCOMPARE(runner.simulation().contours(), direct->contours());
         runner.step(0.01);  // the step covering t = 0.045
-        QVERIFY(direct->comb(comb.map()));
+        QVERIFY(direct->applyMap(comb.map()));
         direct->step(0.01);
         QCOMPARE(runner.simulation().contours(), direct->contours());
         QVERIFY(sim::hausdorffDistance(runner.simulation().regions()[0][0],
