@@ -176,7 +176,7 @@ StylusStroke CombStroke::tineStroke(int k) const
     const sim::Vec2 start = comb.tineStart(k), stroke = to - from;
     const double length = glm::length(stroke);
     const int pieces = amplitude > 0.0 && length > 0.0
-                           ? std::clamp(int(std::ceil(16.0 * length / wavelength)), 1, wavePoints - 1)
+                           ? std::clamp(int(std::ceil(16.0 * length / wavelength)), 1, pathPoints - 1)
                            : 1;
     const sim::Vec2 across = length > 0.0 ? sim::Vec2(-stroke.y, stroke.x) / length : sim::Vec2(0.0);
     StylusStroke path{radius, {}, {}};
@@ -187,6 +187,29 @@ StylusStroke CombStroke::tineStroke(int k) const
         path.times.push_back(time + s * duration);
     }
     return path;
+}
+
+sim::CircularComb CircularCombStroke::map() const
+{
+    return {center, innerRadius, tines, spacing, sharpness, angle * std::numbers::pi / 180.0};
+}
+
+StylusStroke CircularCombStroke::tineStroke(int k) const
+{
+    const double turn = angle * std::numbers::pi / 180.0, ring = innerRadius + k * spacing;
+    const int pieces = std::clamp(int(std::ceil(64.0 * std::abs(turn) / (2.0 * std::numbers::pi))), 1, pathPoints - 1);
+    StylusStroke path{radius, {}, {}};
+    for (int i = 0; i <= pieces; ++i) {
+        const double s = double(i) / pieces;
+        path.points.push_back(center + ring * sim::Vec2(std::cos(s * turn), std::sin(s * turn)));
+        path.times.push_back(time + s * duration);
+    }
+    return path;
+}
+
+sim::Swirl SwirlStroke::map() const
+{
+    return {center, radius, angle * std::numbers::pi / 180.0};
 }
 
 } // namespace vf::model

@@ -2,7 +2,7 @@
 // The scene file (*.vfscene) as data: what docs/scene-format.md describes, already validated.
 // SceneReader fills it from JSON, SceneWriter writes it back, SceneRunner plays it.
 #include "model/SvgImport.h"
-#include "sim/Comb.h"
+#include "sim/ExactMap.h"
 #include "sim/Geometry.h"
 
 #include <QByteArray>
@@ -157,13 +157,48 @@ struct CombStroke {
 
     sim::Comb map() const;
     // Water: the path of tine k, as a stylus stroke (along its wave: 16 points a wavelength, at
-    // most wavePoints).
+    // most pathPoints).
     StylusStroke tineStroke(int k) const;
-    static constexpr int wavePoints = 256;
     friend bool operator==(const CombStroke&, const CombStroke&) = default;
 };
 
-using Stroke = std::variant<StylusStroke, DropStroke, CombStroke>;
+// The most points of a tine's path in the water (a wavy or circular comb's).
+inline constexpr int pathPoints = 256;
+
+// A circular comb turned at `time` about `center`: tines on circles of radii inner_radius + k·spacing,
+// exactly (sim/Whirl.h) or in the water, each tine's stylus tracing its arc for `duration` seconds
+// from the ray toward +x.
+struct CircularCombStroke {
+    CombStroke::Mode mode = CombStroke::Mode::Water;
+    double time = 0.0;
+    sim::Vec2 center;
+    double innerRadius = 0.1;  // the first tine's circle, canvas units
+    int tines = 1;
+    double spacing = 0.1;     // between the tines' circles
+    double angle = 90.0;      // degrees, counter-clockwise
+    double sharpness = 0.02;  // exact: u of the map
+    double duration = 0.5;    // water
+    double radius = 0.03;     // water: each tine's stylus radius
+
+    sim::CircularComb map() const;
+    // Water: the arc of tine k, as a stylus stroke (64 points a turn, at most pathPoints).
+    StylusStroke tineStroke(int k) const;
+    friend bool operator==(const CircularCombStroke&, const CircularCombStroke&) = default;
+};
+
+// A swirl (vortex) at `time`, always exact (sim/Whirl.h): the ink about `center` turned by `angle`
+// degrees there, fading out past `radius`.
+struct SwirlStroke {
+    double time = 0.0;
+    sim::Vec2 center;
+    double radius = 0.1;
+    double angle = 180.0;
+
+    sim::Swirl map() const;
+    friend bool operator==(const SwirlStroke&, const SwirlStroke&) = default;
+};
+
+using Stroke = std::variant<StylusStroke, DropStroke, CombStroke, CircularCombStroke, SwirlStroke>;
 
 struct Scene {
     Canvas canvas;

@@ -259,12 +259,15 @@ const Key<DropStroke> dropKeys[] = {
     {u"name"_s, false, [](const Field& f, DropStroke& d) { d.name = f.name(); }},
 };
 
+CombStroke::Mode combMode(const Field& f)
+{
+    return f.choice<CombStroke::Mode>({{u"water"_s, CombStroke::Mode::Water}, {u"exact"_s, CombStroke::Mode::Exact}});
+}
+
 const Key<CombStroke> combKeys[] = {
     {u"tool"_s, true, readAlready<CombStroke>},
     {u"mode"_s, false,
-     [](const Field& f, CombStroke& c) {
-         c.mode = f.choice<CombStroke::Mode>({{u"water"_s, CombStroke::Mode::Water}, {u"exact"_s, CombStroke::Mode::Exact}});
-     }},
+     [](const Field& f, CombStroke& c) { c.mode = combMode(f); }},
     {u"time"_s, true, [](const Field& f, CombStroke& c) { c.time = seconds(f); }},
     {u"from"_s, true, [](const Field& f, CombStroke& c) { c.from = point(f); }},
     {u"to"_s, true, [](const Field& f, CombStroke& c) { c.to = point(f); }},
@@ -278,21 +281,54 @@ const Key<CombStroke> combKeys[] = {
     {u"phase"_s, false, [](const Field& f, CombStroke& c) { c.phase = f.number(-360.0, 360.0); }},
 };
 
+// A turn of ten revolutions at most: more only winds the ink into rings finer than any spacing.
+double turnDegrees(const Field& f) { return f.number(-3600.0, 3600.0); }
+
+const Key<CircularCombStroke> circularCombKeys[] = {
+    {u"tool"_s, true, readAlready<CircularCombStroke>},
+    {u"mode"_s, false, [](const Field& f, CircularCombStroke& c) { c.mode = combMode(f); }},
+    {u"time"_s, true, [](const Field& f, CircularCombStroke& c) { c.time = seconds(f); }},
+    {u"center"_s, true, [](const Field& f, CircularCombStroke& c) { c.center = point(f); }},
+    {u"inner_radius"_s, true, [](const Field& f, CircularCombStroke& c) { c.innerRadius = length(f); }},
+    {u"tines"_s, false, [](const Field& f, CircularCombStroke& c) { c.tines = int(f.integer(1, limits::maxTines)); }},
+    {u"spacing"_s, false, [](const Field& f, CircularCombStroke& c) { c.spacing = f.number(0.0, limits::maxCanvasSize); }},
+    {u"angle"_s, true, [](const Field& f, CircularCombStroke& c) { c.angle = turnDegrees(f); }},
+    {u"sharpness"_s, false, [](const Field& f, CircularCombStroke& c) { c.sharpness = length(f); }},
+    {u"duration"_s, false, [](const Field& f, CircularCombStroke& c) { c.duration = f.positive(kHuge); }},
+    {u"radius"_s, false, [](const Field& f, CircularCombStroke& c) { c.radius = length(f); }},
+};
+
+const Key<SwirlStroke> swirlKeys[] = {
+    {u"tool"_s, true, readAlready<SwirlStroke>},
+    {u"time"_s, true, [](const Field& f, SwirlStroke& s) { s.time = seconds(f); }},
+    {u"center"_s, true, [](const Field& f, SwirlStroke& s) { s.center = point(f); }},
+    {u"radius"_s, true, [](const Field& f, SwirlStroke& s) { s.radius = length(f); }},
+    {u"angle"_s, true, [](const Field& f, SwirlStroke& s) { s.angle = turnDegrees(f); }},
+};
+
 Stroke readStroke(const Field& field)
 {
-    enum class Tool { Stylus, Drop, Comb };
+    enum class Tool { Stylus, Drop, Comb, CircularComb, Swirl };
     const Field tool = field.member(u"tool"_s);
     if (!tool.exists())
         tool.fail(u"missing (required)"_s);
-    switch (tool.choice<Tool>({{u"stylus"_s, Tool::Stylus}, {u"drop"_s, Tool::Drop}, {u"comb"_s, Tool::Comb}})) {
+    switch (tool.choice<Tool>({{u"stylus"_s, Tool::Stylus},
+                               {u"drop"_s, Tool::Drop},
+                               {u"comb"_s, Tool::Comb},
+                               {u"circular-comb"_s, Tool::CircularComb},
+                               {u"swirl"_s, Tool::Swirl}})) {
     case Tool::Stylus:
         return readAs(field, stylusKeys);
     case Tool::Drop:
         return readAs(field, dropKeys);
     case Tool::Comb:
+        return readAs(field, combKeys);
+    case Tool::CircularComb:
+        return readAs(field, circularCombKeys);
+    case Tool::Swirl:
         break;
     }
-    return readAs(field, combKeys);
+    return readAs(field, swirlKeys);
 }
 
 // ---- the whole scene --------------------------------------------------------------------------
@@ -332,10 +368,11 @@ void checkStrokesFitFlow(const Scene& scene, const KeyPath& root)
         return;
     for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
         const auto* comb = std::get_if<CombStroke>(&scene.strokes[i]);
+        const auto* circular = std::get_if<CircularCombStroke>(&scene.strokes[i]);
         if (std::holds_alternative<StylusStroke>(scene.strokes[i]))
             itemPath(root, u"strokes"_s, i).key(u"tool"_s).fail(
                 u"a stylus needs \"flow\": {\"type\": \"fluid\"}: an analytic flow is prescribed and does not react to it"_s);
-        if (comb && comb->mode == CombStroke::Mode::Water)
+        if ((comb && comb->mode == CombStroke::Mode::Water) || (circular && circular->mode == CombStroke::Mode::Water))
             itemPath(root, u"strokes"_s, i).key(u"mode"_s).fail(
                 u"a comb in the water needs \"flow\": {\"type\": \"fluid\"}; use \"mode\": \"exact\" with an analytic flow"_s);
     }

@@ -27,7 +27,7 @@ public:
     bool vertexLimitReached() const { return m_vertexLimitReached; }
 
     // One step of the scene's dt (or `dt` when given): drops whose time has come land first, then
-    // the exact combs due act, then the stylus strokes' share of this interval acts on the fluid,
+    // the exact maps due act, then the stylus strokes' share of this interval acts on the fluid,
     // then the simulation steps.
     sim::StepReport step(double dt);
 

@@ -18,14 +18,14 @@ SceneScript::SceneScript(const Scene& scene)
     for (const Stroke& s : scene.strokes) {
         if (const auto* drop = std::get_if<DropStroke>(&s)) {
             m_drops.push_back(*drop);
+        } else if (const auto* stylus = std::get_if<StylusStroke>(&s)) {
+            m_strokes.push_back(*stylus);
+        } else if (const auto* swirl = std::get_if<SwirlStroke>(&s)) {
+            m_maps.push_back({swirl->time, swirl->map()});
         } else if (const auto* comb = std::get_if<CombStroke>(&s)) {
-            if (comb->mode == CombStroke::Mode::Exact)
-                m_combs.push_back(*comb);
-            else
-                for (int k = 0; k < comb->tines; ++k)
-                    m_strokes.push_back(comb->tineStroke(k));
+            addComb(*comb);
         } else {
-            m_strokes.push_back(std::get<StylusStroke>(s));
+            addComb(std::get<CircularCombStroke>(s));
         }
     }
     std::stable_sort(m_drops.begin(), m_drops.end(), [](const DropStroke& a, const DropStroke& b) { return a.time < b.time; });
@@ -65,12 +65,22 @@ bool SceneScript::applyDrops(sim::Simulation& simulation, double from, double to
     return limitReached;
 }
 
-bool SceneScript::applyCombs(sim::Simulation& simulation, double from, double to) const
+template <typename AnyComb>
+void SceneScript::addComb(const AnyComb& comb)
+{
+    if (comb.mode == CombStroke::Mode::Exact)
+        m_maps.push_back({comb.time, comb.map()});
+    else
+        for (int k = 0; k < comb.tines; ++k)
+            m_strokes.push_back(comb.tineStroke(k));
+}
+
+bool SceneScript::applyMaps(sim::Simulation& simulation, double from, double to) const
 {
     bool limitReached = false;
-    for (const CombStroke& comb : m_combs)
-        if (comb.time > from && comb.time <= to)
-            limitReached = !simulation.applyMap(comb.map()) || limitReached;
+    for (const TimedMap& timed : m_maps)
+        if (timed.time > from && timed.time <= to)
+            limitReached = !simulation.applyMap(timed.map) || limitReached;
     return limitReached;
 }
 

@@ -25,17 +25,26 @@ public:
     // Lands the drops due in (from, to], in order; returns whether one took the vertex count to
     // tracking.max_vertices.
     bool applyDrops(sim::Simulation& simulation, double from, double to) const;
-    // Applies the exact combs due in (from, to], in file order; returns whether one took the vertex
-    // count to tracking.max_vertices. (A comb in the water is a stylus stroke per tine.)
-    bool applyCombs(sim::Simulation& simulation, double from, double to) const;
+    // Applies the exact maps (combs, circular combs, swirls) due in (from, to], in file order;
+    // returns whether one took the vertex count to tracking.max_vertices. (A comb in the water is
+    // a stylus stroke per tine.)
+    bool applyMaps(sim::Simulation& simulation, double from, double to) const;
     // The stylus strokes' share of (from, to]: every piece of a pen path overlapping the interval
     // acts with the part of it inside the interval.
     void applyStylus(sim::Simulation& simulation, double from, double to) const;
 
 private:
+    // A comb straight or circular: its map when exact, else a stylus stroke per tine.
+    template <typename AnyComb>
+    void addComb(const AnyComb& comb);
+
     std::vector<DropStroke> m_drops;  // in landing order
     std::vector<StylusStroke> m_strokes;  // with a comb in the water's tines
-    std::vector<CombStroke> m_combs;      // the exact ones
+    struct TimedMap {
+        double time;
+        sim::ExactMap map;
+    };
+    std::vector<TimedMap> m_maps;  // the exact tools'
     RegionTable m_looks;
     int m_startingRegions = 0;
 };

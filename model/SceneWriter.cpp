@@ -135,6 +135,31 @@ QJsonObject toJson(const CombStroke& c)
     return comb;
 }
 
+QJsonObject toJson(const CircularCombStroke& c)
+{
+    QJsonObject comb{{u"tool"_s, u"circular-comb"_s},
+                     {u"mode"_s, c.mode == CombStroke::Mode::Exact ? u"exact"_s : u"water"_s},
+                     {u"time"_s, c.time},
+                     {u"center"_s, pair(c.center)},
+                     {u"inner_radius"_s, c.innerRadius},
+                     {u"tines"_s, c.tines},
+                     {u"spacing"_s, c.spacing},
+                     {u"angle"_s, c.angle}};
+    if (c.mode == CombStroke::Mode::Exact) {
+        comb.insert(u"sharpness"_s, c.sharpness);
+    } else {
+        comb.insert(u"duration"_s, c.duration);
+        comb.insert(u"radius"_s, c.radius);
+    }
+    return comb;
+}
+
+QJsonObject toJson(const SwirlStroke& s)
+{
+    return {{u"tool"_s, u"swirl"_s}, {u"time"_s, s.time}, {u"center"_s, pair(s.center)}, {u"radius"_s, s.radius},
+            {u"angle"_s, s.angle}};
+}
+
 template <typename... Ts>
 QJsonObject toJson(const std::variant<Ts...>& value)
 {

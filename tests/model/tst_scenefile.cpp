@@ -81,6 +81,10 @@ Scene richScene()
     s.strokes.push_back(CombStroke{CombStroke::Mode::Exact, 0.0, {0.5, 0.1}, {0.5, 0.9}, 1, 0.0, 1.0 / 3.0, 0.5, 0.03});
     s.strokes.push_back(CombStroke{CombStroke::Mode::Water, 0.2, {0.1, 0.9}, {0.7, 0.3}, 5, 0.05, 0.02, 0.3, 0.01,
                                    1.0 / 7.0, 0.3, -45.5});
+    s.strokes.push_back(CircularCombStroke{CombStroke::Mode::Water, 0.3, {0.5, 0.4}, 0.05, 4, 1.0 / 60.0, -270.0, 0.02,
+                                           0.9, 0.015});
+    s.strokes.push_back(CircularCombStroke{CombStroke::Mode::Exact, 0.4, {0.45, 0.5}, 0.2, 1, 0.0, 3600.0, 1e-3, 0.5, 0.03});
+    s.strokes.push_back(SwirlStroke{0.6, {0.1, 1.0 / 3.0}, 0.25, -3600.0});
     return s;
 }
 

@@ -77,6 +77,43 @@ private slots:
                                        SceneRunner(stillScene()).simulation().regions()[0][0]) > 0.1);
     }
 
+    // A circular comb and a swirl act at their times too, in file order, as their maps would.
+    void circularCombsAndSwirlsActInOrder()
+    {
+        Scene scene = stillScene();
+        const CircularCombStroke circular{CombStroke::Mode::Exact, 0.015, {0.5, 0.45}, 0.05, 3, 0.06, 120.0, 0.02};
+        const SwirlStroke swirl{0.015, {0.45, 0.5}, 0.2, -200.0};
+        scene.strokes = {circular, swirl};
+        SceneRunner runner(scene);
+        auto direct = sim::makeReferenceSimulation(simulationSettings(scene));
+        direct->addRegion(shapeContours(scene.regions[0].shape, scene.tracking.maxSpacing));
+        direct->step(0.01);
+        QVERIFY(direct->applyMap(circular.map()));
+        QVERIFY(direct->applyMap(swirl.map()));
+        direct->step(0.01);
+        runner.step(0.01);
+        runner.step(0.01);
+        QCOMPARE(runner.simulation().contours(), direct->contours());
+        QVERIFY(sim::hausdorffDistance(runner.simulation().regions()[0][0],
+                                       SceneRunner(stillScene()).simulation().regions()[0][0]) > 0.01);
+    }
+
+    // A circular comb's tines in the water trace their arcs about the centre from the ray toward +x.
+    void circularTinesTraceTheirArcs()
+    {
+        const CircularCombStroke rake{CombStroke::Mode::Water, 0.2, {0.5, 0.5}, 0.1, 2, 0.05, 90.0, 0.02, 0.4, 0.01};
+        const StylusStroke outer = rake.tineStroke(1);
+        QCOMPARE(outer.points.size(), std::size_t(17));  // a quarter turn: 16 pieces
+        QCOMPARE(outer.points.front(), sim::Vec2(0.65, 0.5));
+        QVERIFY(glm::distance(outer.points.back(), sim::Vec2(0.5, 0.65)) < 1e-12);
+        for (const sim::Vec2& p : outer.points)
+            QVERIFY(std::abs(glm::distance(p, rake.center) - 0.15) < 1e-12);
+        QCOMPARE(outer.times.back(), 0.6);
+        CircularCombStroke spun = rake;
+        spun.angle = -3600.0;
+        QCOMPARE(spun.tineStroke(0).points.size(), std::size_t(pathPoints));
+    }
+
     // A comb in the water is its tines' stylus strokes, moving together.
     void waterCombIsItsTines()
     {
@@ -113,10 +150,10 @@ private slots:
         QVERIFY(glm::distance(tine.points[35], sim::Vec2(0.5 - 0.05 * 0.5, 0.5)) < 1e-12);
         const double startPhase = 2.0 * std::numbers::pi * -0.3 / 0.1385 + std::numbers::pi / 6.0;
         QVERIFY(glm::distance(tine.points.front(), sim::Vec2(0.5 - 0.05 * std::sin(startPhase), 0.2)) < 1e-12);
-        // A wave of a thousand wavelengths keeps to wavePoints.
+        // A wave of a thousand wavelengths keeps to pathPoints.
         CombStroke fine = rake;
         fine.wavelength = 0.0006;
-        QCOMPARE(fine.tineStroke(0).points.size(), std::size_t(CombStroke::wavePoints));
+        QCOMPARE(fine.tineStroke(0).points.size(), std::size_t(pathPoints));
     }
 
     void pictureCarriesTheSceneLook()
