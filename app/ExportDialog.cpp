@@ -1,6 +1,7 @@
 #include "app/ExportDialog.h"
 
 #include "app/Folders.h"
+#include "app/MemoryBudget.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -178,7 +179,7 @@ void ExportDialog::exportFile()
 {
     if (m_path->text().trimmed().isEmpty()) {
         m_lastError = tr("Choose a file to export to.");
-    } else {
+    } else if (m_lastError = checkPngMemory(); m_lastError.isEmpty()) {
         m_path->setText(filePath());
         QGuiApplication::setOverrideCursor(Qt::WaitCursor);
         m_lastError = render::exportDrawing(m_drawing, filePath(), options());
@@ -188,6 +189,25 @@ void ExportDialog::exportFile()
         return showError();
     saveSettings();
     accept();
+}
+
+// A PNG is painted whole in memory: one the memory available cannot hold, by the estimate with
+// which `vectorfluid render` refuses a --dpi, is refused before anything is allocated (it would
+// otherwise swap the machine to a halt, or fail only after a long wait).
+QString ExportDialog::checkPngMemory() const
+{
+    if (m_format->currentData().toString() != QLatin1String("png"))
+        return {};
+    const render::RasterSize pixels = render::pngPixels(m_drawing, options());
+    const double available = availableMemory();
+    if (available <= 0 || pngBytes(pixels) <= available)
+        return {};
+    return tr("A %1 x %2 pixel PNG (%3 dpi) needs about %4 of memory, more than the %5 available: "
+              "lower the resolution or the page size.")
+        .arg(pixels.width, 0, 'f', 0)
+        .arg(pixels.height, 0, 'f', 0)
+        .arg(m_dpi->value())
+        .arg(bytesText(pngBytes(pixels)), bytesText(available));
 }
 
 // Window-modal but not blocking (open(), not exec()), so that nothing waits on the box.

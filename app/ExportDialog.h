@@ -29,6 +29,7 @@ public:
 private:
     void browse();
     void exportFile();
+    QString checkPngMemory() const;
     void showError();
     void formatPicked();
     void pathEdited();

@@ -1,12 +1,12 @@
 #include "app/MemoryBudget.h"
 
-#include "render/Exporter.h"
-
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace vf::app {
 
@@ -21,7 +21,13 @@ constexpr double kBytesPerCell = 600;
 // A PNG holds its image (4 bytes a pixel) and its encoding, at worst about as large again.
 constexpr double kBytesPerPixel = 8;
 
-// "200 GB", "1180 GB", "614 MB", "0.6 MB": three digits at most, in the larger unit that has one.
+struct Part {
+    QString what;  // the limit that sets it, as the user wrote it
+    double bytes = 0;
+};
+
+} // namespace
+
 QString bytesText(double bytes)
 {
     const bool giga = bytes >= 1e9;
@@ -30,12 +36,21 @@ QString bytesText(double bytes)
                                        giga ? QStringLiteral("GB") : QStringLiteral("MB"));
 }
 
-struct Part {
-    QString what;  // the limit that sets it, as the user wrote it
-    double bytes = 0;
-};
+double vertexBytes(std::int64_t maxVertices) { return double(maxVertices) * kBytesPerVertex; }
 
-} // namespace
+double gridBytes(const model::FlowSpec& flow)
+{
+    return flow.type == model::FlowSpec::Type::Fluid ? double(flow.gridX) * flow.gridY * kBytesPerCell : 0.0;
+}
+
+double pngBytes(const render::RasterSize& pixels) { return pixels.width * pixels.height * kBytesPerPixel; }
+
+std::int64_t maxVerticesFitting(const model::FlowSpec& flow, double available)
+{
+    if (available <= 0)
+        return std::numeric_limits<std::int64_t>::max();
+    return std::int64_t(std::floor(std::max(0.0, available - gridBytes(flow)) / kBytesPerVertex));
+}
 
 double availableMemory()
 {
@@ -52,10 +67,9 @@ QString checkMemory(const model::Scene& scene, const RenderOptions& options, dou
 {
     std::vector<Part> parts;
     parts.push_back({QStringLiteral("tracking.max_vertices %1").arg(scene.tracking.maxVertices),
-                     double(scene.tracking.maxVertices) * kBytesPerVertex});
+                     vertexBytes(scene.tracking.maxVertices)});
     if (scene.flow.type == model::FlowSpec::Type::Fluid)
-        parts.push_back({QStringLiteral("flow.grid %1 x %2").arg(scene.flow.gridX).arg(scene.flow.gridY),
-                         double(scene.flow.gridX) * scene.flow.gridY * kBytesPerCell});
+        parts.push_back({QStringLiteral("flow.grid %1 x %2").arg(scene.flow.gridX).arg(scene.flow.gridY), gridBytes(scene.flow)});
     model::Drawing canvas;
     canvas.width = scene.canvas.width;
     canvas.height = scene.canvas.height;
@@ -64,7 +78,7 @@ QString checkMemory(const model::Scene& scene, const RenderOptions& options, dou
     if (png) {  // the PNGs are written one after the other, so only one image is held
         const render::RasterSize size = render::pngPixels(canvas, options.exportOptions);
         parts.push_back({QStringLiteral("--dpi %1 (a %2 x %3 pixel PNG)").arg(options.exportOptions.dpi).arg(size.width, 0, 'f', 0).arg(size.height, 0, 'f', 0),
-                         size.width * size.height * kBytesPerPixel});
+                         pngBytes(size)});
     }
     double total = 0;
     QStringList described;

@@ -5,8 +5,11 @@
 // swapping after hours of steps.
 #include "app/RenderOptions.h"
 #include "model/Scene.h"
+#include "render/Exporter.h"
 
 #include <QString>
+
+#include <cstdint>
 
 namespace vf::app {
 
@@ -15,5 +18,15 @@ double availableMemory();
 
 // An empty string, or one line naming each part of the estimate, its limit and the total.
 [[nodiscard]] QString checkMemory(const model::Scene& scene, const RenderOptions& options, double available);
+
+// The parts of the estimate, for the app to hold its settings and exports to the same limits.
+double vertexBytes(std::int64_t maxVertices);
+double gridBytes(const model::FlowSpec& flow);  // 0 for an analytic flow, which has no grid
+double pngBytes(const render::RasterSize& pixels);
+// The largest tracking.max_vertices whose estimate fits in `available` beside `flow`'s grid (may
+// be below any usable count); INT64_MAX when `available` is unknown (0).
+std::int64_t maxVerticesFitting(const model::FlowSpec& flow, double available);
+// "200 GB", "1180 GB", "614 MB", "0.6 MB": three digits at most, in the larger unit that has one.
+QString bytesText(double bytes);
 
 } // namespace vf::app

@@ -77,8 +77,9 @@ QString deviceText(const sim::opencl::DeviceInfo& device)
 
 } // namespace
 
-SimulationPanel::SimulationPanel(sim::opencl::DeviceListing devices, QWidget* parent)
-    : QWidget(parent), m_devices(std::move(devices))
+SimulationPanel::SimulationPanel(sim::opencl::DeviceListing devices, QWidget* parent,
+                                 std::function<double()> availableMemory)
+    : QWidget(parent), m_devices(std::move(devices)), m_availableMemory(std::move(availableMemory))
 {
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(createFlowGroup());
@@ -144,6 +145,11 @@ QWidget* SimulationPanel::createTrackingGroup()
     m_maxVertices = committingSpinBox<QSpinBox>("maxVertices");
     m_maxVertices->setRange(kMinVertices, static_cast<int>(limits::maxVertices));
     m_maxVertices->setGroupSeparatorShown(true);
+    m_maxVertices->setToolTip(tr("Refinement stops here; at most what the memory available holds"));
+    m_memoryNote = new QLabel;
+    m_memoryNote->setObjectName(QStringLiteral("memoryNote"));
+    m_memoryNote->setWordWrap(true);  // one sentence, however narrow the dock
+    m_memoryNote->hide();
 
     auto* group = new QGroupBox(tr("Tracking"));
     auto* form = new QFormLayout(group);
@@ -152,6 +158,7 @@ QWidget* SimulationPanel::createTrackingGroup()
     form->addRow(m_proximity);
     form->addRow(m_areaCorrection);
     form->addRow(tr("Max vertices:"), m_maxVertices);
+    form->addRow(m_memoryNote);
     return group;
 }
 
@@ -201,9 +208,7 @@ void SimulationPanel::connectEdits()
             [this](bool on) { edit(nullptr, [&](model::EngineSettings& s) { s.tracking.proximity = on; }); });
     connect(m_areaCorrection, &QCheckBox::toggled, this,
             [this](bool on) { edit(nullptr, [&](model::EngineSettings& s) { s.tracking.areaCorrection = on; }); });
-    connect(m_maxVertices, &QSpinBox::valueChanged, this, [this](int value) {
-        edit(m_maxVertices, [&](model::EngineSettings& s) { s.tracking.maxVertices = value; });
-    });
+    connect(m_maxVertices, &QSpinBox::valueChanged, this, &SimulationPanel::editMaxVertices);
     connect(m_backend, &QComboBox::currentIndexChanged, this, [this] {
         edit(nullptr, [&](model::EngineSettings& s) { s.backend = m_backend->currentData().toString(); });
     });
@@ -215,7 +220,29 @@ void SimulationPanel::connectEdits()
 void SimulationPanel::setSettings(const model::EngineSettings& settings)
 {
     m_settings = settings;
+    m_memoryNote->hide();
     showSettings();
+}
+
+// More vertices than the memory available holds beside the grid, by the estimate with which
+// `vectorfluid render` refuses a scene, would end the simulation in an allocation failure hours
+// later: the value is lowered to the most that fits, and the note says so.
+void SimulationPanel::editMaxVertices(int value)
+{
+    if (m_showing)
+        return;
+    const double available = m_availableMemory();
+    const std::int64_t fits = std::clamp<std::int64_t>(maxVerticesFitting(m_settings.flow, available), kMinVertices,
+                                                       m_maxVertices->maximum());
+    m_memoryNote->setVisible(value > fits);
+    if (value > fits) {
+        m_memoryNote->setText(tr("%1 vertices need about %2 of memory, more than the %3 available: lowered to %4.")
+                                  .arg(locale().toString(value),
+                                       bytesText(vertexBytes(value) + gridBytes(m_settings.flow)),
+                                       bytesText(available), locale().toString(qlonglong(fits))));
+        value = int(fits);
+    }
+    edit(m_maxVertices, [&](model::EngineSettings& s) { s.tracking.maxVertices = value; });
 }
 
 void SimulationPanel::edit(const QObject* spinBox, const std::function<void(model::EngineSettings&)>& change)

@@ -2,6 +2,7 @@
 // The content of the "Simulation" dock: the flow, tracking and backend settings of the document.
 // It holds no document state of its own: the app shows the document's settings with setSettings
 // and turns each settingsEdited into one undoable command.
+#include "app/MemoryBudget.h"
 #include "model/EngineSettings.h"
 #include "sim/opencl/DeviceList.h"
 
@@ -14,6 +15,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
+class QLabel;
 class QLineEdit;
 class QRadioButton;
 class QSpinBox;
@@ -25,7 +27,9 @@ class SimulationPanel final : public QWidget {
 
 public:
     // `devices`: the OpenCL listing (sim::opencl::listDevices(), taken once by the caller).
-    explicit SimulationPanel(sim::opencl::DeviceListing devices, QWidget* parent = nullptr);
+    // `availableMemory`: bytes free now (app/MemoryBudget.h), asked at each max vertices edit.
+    explicit SimulationPanel(sim::opencl::DeviceListing devices, QWidget* parent = nullptr,
+                             std::function<double()> availableMemory = app::availableMemory);
 
     void setSettings(const model::EngineSettings& settings);  // shows them; emits nothing
     model::EngineSettings settings() const { return m_settings; }
@@ -43,12 +47,14 @@ private:
     void connectEdits();
     // `spinBox`: the spin box being changed, or null.
     void edit(const QObject* spinBox, const std::function<void(model::EngineSettings&)>& change);
+    void editMaxVertices(int value);
     void showSettings();
     void showMode();
     void showDevices();
 
     model::EngineSettings m_settings;
     sim::opencl::DeviceListing m_devices;
+    std::function<double()> m_availableMemory;
     bool m_showing = false;  // the widgets are being set from m_settings: their signals are no edits
 
     QFormLayout* m_flowForm = nullptr;
@@ -67,6 +73,7 @@ private:
     QCheckBox* m_proximity = nullptr;
     QCheckBox* m_areaCorrection = nullptr;
     QSpinBox* m_maxVertices = nullptr;
+    QLabel* m_memoryNote = nullptr;  // why the last max vertices typed was lowered; hidden otherwise
     QComboBox* m_backend = nullptr;
     QComboBox* m_device = nullptr;
 };

@@ -3,6 +3,7 @@
 #include <QSaveFile>
 
 #include <cerrno>
+#include <unistd.h>
 
 namespace vf::model {
 
@@ -15,12 +16,24 @@ QString cannotWrite(const QSaveFile& file)
     return failure(file.fileName(), QStringLiteral("cannot write: %1").arg(file.errorString()));
 }
 
-// What a failed write says: "disk full" for a full file system, else the system's own words.
-QString writeFailure(const QIODevice& device, int error)
+// What a failed write says: "disk full" for a full file system (errno `error`), else the
+// system's own words.
+QString writeFailure(int error, const QString& words)
 {
     if (error == ENOSPC)
         return QStringLiteral("write failed: disk full");
-    return QStringLiteral("write failed: %1").arg(device.errorString());
+    return QStringLiteral("write failed: %1").arg(words);
+}
+
+// QSaveFile::commit() syncs too, but ignores a failure there; a disk that fills or fails only
+// when the data is written back (thin-provisioned, network, EIO) would then lose the file after
+// the rename. Syncing here reports it while the old file is still in place.
+QString sync(QSaveFile& file)
+{
+    if (::fsync(file.handle()) == 0)
+        return {};
+    const int error = errno;
+    return writeFailure(error, qt_error_string(error));
 }
 
 } // namespace
@@ -33,7 +46,10 @@ QString FileBatch::write(const QString& path, const FileContent& content)
     auto file = std::make_unique<QSaveFile>(path);
     if (!file->open(QIODevice::WriteOnly | QIODevice::Unbuffered))
         return cannotWrite(*file);
-    if (const QString error = content(*file); !error.isEmpty()) {
+    QString error = content(*file);
+    if (error.isEmpty())
+        error = sync(*file);
+    if (!error.isEmpty()) {
         file->cancelWriting();
         return failure(path, error);
     }
@@ -81,7 +97,7 @@ QString writeAll(QIODevice& device, const char* data, qint64 size)
         errno = 0;
         const qint64 written = device.write(data, size);
         if (written <= 0)
-            return writeFailure(device, errno);
+            return writeFailure(errno, device.errorString());
         data += written;
         size -= written;
     }

@@ -18,7 +18,8 @@ using FileContent = std::function<QString(QIODevice&)>;
 // Calls `write` with the open temporary. The device is unbuffered: Qt 6.4's QSaveFile::commit()
 // does not report a failure of its final flush (disk full, file size limit), and the truncated
 // file would replace the old one, so every write must reach the disk while its result can still
-// be checked.
+// be checked. Nor does it report a failed sync, so the temporary is synced (fsync) here: a disk
+// that fills or fails only when the data is written back says so before anything is renamed.
 // Returns an empty string, or one line "path: what went wrong".
 [[nodiscard]] QString saveAtomically(const QString& path, const FileContent& write);
 

@@ -117,6 +117,7 @@ private slots:
     void defaultPathIsInAnExistingFolderAndShownWhole();
     void returnInThePathExports();
     void unwritablePathReportsAndWritesNothing();
+    void pngBeyondMemoryIsRefused();
     void formatAndSuffixStayInStep();
     void choicesAreRemembered();
     void copyAsSvgPutsSvgOnTheClipboard();
@@ -341,6 +342,28 @@ void TestExportDialog::unwritablePathReportsAndWritesNothing()
     QCOMPARE(box->text(), dialog->lastError());
     QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot),
              QStringList{QStringLiteral("blocker")});
+}
+
+// The largest page (1,000,000 pt wide) at the highest resolution: a PNG of about 1.8e16 bytes,
+// beyond any machine, refused in one line before anything is allocated; the dialog stays open.
+void TestExportDialog::pngBeyondMemoryIsRefused()
+{
+    const auto dialog = openDialog();
+    pick(child<QComboBox>(*dialog, "format"), QStringLiteral("PNG"));
+    pick(child<QComboBox>(*dialog, "unit"), QStringLiteral("pt"));
+    typeInto(child<QSpinBox>(*dialog, "dpi"), QStringLiteral("4800"));
+    typeInto(child<QDoubleSpinBox>(*dialog, "pageWidth"), QStringLiteral("1000000"));
+    const QString file = path(QStringLiteral("huge.png"));
+    exportTo(*dialog, file);
+
+    const QString error = dialog->lastError();
+    QVERIFY2(error.startsWith(QStringLiteral("A 66666667 x 33333333 pixel PNG (4800 dpi) needs about ")), qPrintable(error));
+    QVERIFY2(error.contains(QStringLiteral(" available")) && !error.contains(u'\n'), qPrintable(error));
+    QVERIFY(dialog->isVisible());
+    const QMessageBox* box = child<QMessageBox>(*dialog, "exportError");
+    QVERIFY(box->isVisible());
+    QCOMPARE(box->text(), error);
+    QVERIFY(!QFileInfo::exists(file));
 }
 
 void TestExportDialog::formatAndSuffixStayInStep()

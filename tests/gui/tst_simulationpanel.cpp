@@ -1,12 +1,14 @@
 // The Simulation dock's panel driven through its widgets: every committed edit is exactly one
 // settingsEdited that changes exactly the field edited, showing settings is no edit, the mode and
-// the viscosity follow each other, and the ranges are the scene format's.
+// the viscosity follow each other, the ranges are the scene format's, and max vertices are held
+// to what the memory available holds.
 #include "FindChild.h"
 #include "app/SimulationPanel.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QRadioButton>
 #include <QSignalSpy>
@@ -146,15 +148,18 @@ private slots:
     void unknownDeviceIsShownAsMissing();
     void rangesAreTheSceneFormatLimits();
     void typedValuesAreClamped();
+    void maxVerticesBeyondMemoryAreLowered();
     void analyticFlowShowsItsExpressions();
 
 private:
-    std::unique_ptr<app::SimulationPanel> openPanel(sim::opencl::DeviceListing devices = twoDevices());
+    std::unique_ptr<app::SimulationPanel> openPanel(sim::opencl::DeviceListing devices = twoDevices(),
+                                                    std::function<double()> availableMemory = app::availableMemory);
 };
 
-std::unique_ptr<app::SimulationPanel> TestSimulationPanel::openPanel(sim::opencl::DeviceListing devices)
+std::unique_ptr<app::SimulationPanel> TestSimulationPanel::openPanel(sim::opencl::DeviceListing devices,
+                                                                     std::function<double()> availableMemory)
 {
-    auto panel = std::make_unique<app::SimulationPanel>(std::move(devices));
+    auto panel = std::make_unique<app::SimulationPanel>(std::move(devices), nullptr, std::move(availableMemory));
     panel->setSettings(testSettings());
     panel->show();
     if (!QTest::qWaitForWindowExposed(panel.get()))
@@ -382,6 +387,35 @@ void TestSimulationPanel::typedValuesAreClamped()
     typeAndCommit(child<QDoubleSpinBox>(*panel, "maxSpacing"), QStringLiteral("0"));
     QCOMPARE(spy.count(), 2);
     QVERIFY(edited(spy, 1).tracking.maxSpacing > 0);
+}
+
+// With 1 GB available, the most that `vectorfluid render`'s estimate (app/MemoryBudget.cpp) lets
+// beside the 96 x 48 grid: (1e9 - 96 * 48 * 600) / 200 = 4,986,176 vertices.
+void TestSimulationPanel::maxVerticesBeyondMemoryAreLowered()
+{
+    const auto panel = openPanel(twoDevices(), [] { return 1e9; });
+    QSignalSpy spy(panel.get(), &app::SimulationPanel::settingsEdited);
+    QSpinBox* maxVertices = child<QSpinBox>(*panel, "maxVertices");
+    const QLabel* note = child<QLabel>(*panel, "memoryNote");
+    QVERIFY(!note->isVisible());
+
+    typeAndCommit(maxVertices, QStringLiteral("10000000"));
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(edited(spy).tracking.maxVertices, 4'986'176);
+    QCOMPARE(maxVertices->value(), 4'986'176);
+    QVERIFY(note->isVisible());
+    const QLocale locale = panel->locale();
+    QCOMPARE(note->text(), QStringLiteral("%1 vertices need about 2 GB of memory, more than the 1 GB available: lowered to %2.")
+                               .arg(locale.toString(10'000'000), locale.toString(4'986'176)));
+
+    QTest::keyClick(maxVertices, Qt::Key_Up);  // no step past it either
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(maxVertices->value(), 4'986'176);
+
+    typeAndCommit(maxVertices, QStringLiteral("5000"));
+    QCOMPARE(spy.count(), 2);
+    QCOMPARE(edited(spy, 1).tracking.maxVertices, 5000);
+    QVERIFY(!note->isVisible());
 }
 
 void TestSimulationPanel::analyticFlowShowsItsExpressions()
