@@ -111,22 +111,27 @@ QJsonObject toJson(const DropStroke& d)
     return drop;
 }
 
-// Every key, defaults included: a program reading it needs no table of defaults.
-QJsonObject toJson(const CombStroke& c)
+// A comb's keys that depend on how it acts: its sharpness when exact, its tines' duration and
+// stylus radius in the water.
+template <typename AnyComb>
+void insertActionKeys(QJsonObject& comb, const AnyComb& c)
 {
-    QJsonObject comb{{u"tool"_s, u"comb"_s},
-                     {u"mode"_s, c.mode == CombStroke::Mode::Exact ? u"exact"_s : u"water"_s},
-                     {u"time"_s, c.time},
-                     {u"from"_s, pair(c.from)},
-                     {u"to"_s, pair(c.to)},
-                     {u"tines"_s, c.tines},
-                     {u"spacing"_s, c.spacing}};
-    if (c.mode == CombStroke::Mode::Exact) {
+    const bool exact = c.mode == CombStroke::Mode::Exact;
+    comb.insert(u"mode"_s, exact ? u"exact"_s : u"water"_s);
+    if (exact) {
         comb.insert(u"sharpness"_s, c.sharpness);
     } else {
         comb.insert(u"duration"_s, c.duration);
         comb.insert(u"radius"_s, c.radius);
     }
+}
+
+// Every key, defaults included: a program reading it needs no table of defaults.
+QJsonObject toJson(const CombStroke& c)
+{
+    QJsonObject comb{{u"tool"_s, u"comb"_s},      {u"time"_s, c.time},   {u"from"_s, pair(c.from)},
+                     {u"to"_s, pair(c.to)},       {u"tines"_s, c.tines}, {u"spacing"_s, c.spacing}};
+    insertActionKeys(comb, c);
     if (c.amplitude > 0.0) {
         comb.insert(u"amplitude"_s, c.amplitude);
         comb.insert(u"wavelength"_s, c.wavelength);
@@ -137,20 +142,10 @@ QJsonObject toJson(const CombStroke& c)
 
 QJsonObject toJson(const CircularCombStroke& c)
 {
-    QJsonObject comb{{u"tool"_s, u"circular-comb"_s},
-                     {u"mode"_s, c.mode == CombStroke::Mode::Exact ? u"exact"_s : u"water"_s},
-                     {u"time"_s, c.time},
-                     {u"center"_s, pair(c.center)},
-                     {u"inner_radius"_s, c.innerRadius},
-                     {u"tines"_s, c.tines},
-                     {u"spacing"_s, c.spacing},
+    QJsonObject comb{{u"tool"_s, u"circular-comb"_s}, {u"time"_s, c.time},   {u"center"_s, pair(c.center)},
+                     {u"inner_radius"_s, c.innerRadius}, {u"tines"_s, c.tines}, {u"spacing"_s, c.spacing},
                      {u"angle"_s, c.angle}};
-    if (c.mode == CombStroke::Mode::Exact) {
-        comb.insert(u"sharpness"_s, c.sharpness);
-    } else {
-        comb.insert(u"duration"_s, c.duration);
-        comb.insert(u"radius"_s, c.radius);
-    }
+    insertActionKeys(comb, c);
     return comb;
 }
 
