@@ -212,4 +212,40 @@ sim::Swirl SwirlStroke::map() const
     return {center, radius, angle * std::numbers::pi / 180.0};
 }
 
+namespace {
+
+// SplitMix64 (Steele, Lea and Flood 2014): a tiny generator whose every output is fixed by the
+// seed, unlike the standard library's distributions.
+class SplitMix64 {
+public:
+    explicit SplitMix64(std::uint64_t seed) : m_state(seed) {}
+    // Uniform in [0, 1), 53 bits.
+    double unit()
+    {
+        std::uint64_t z = (m_state += 0x9e3779b97f4a7c15ULL);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    }
+
+private:
+    std::uint64_t m_state;
+};
+
+} // namespace
+
+std::vector<DropStroke> SpatterStroke::drops() const
+{
+    SplitMix64 random(seed);
+    std::vector<DropStroke> out;
+    for (int i = 0; i < count; ++i) {
+        const double distance = spread * std::sqrt(random.unit()), turn = 2.0 * std::numbers::pi * random.unit();
+        const double radius = smallest + (largest - smallest) * random.unit();
+        const auto pick = std::min(std::size_t(random.unit() * double(colors.size())), colors.size() - 1);
+        out.push_back({time + i * interval, center + distance * sim::Vec2(std::cos(turn), std::sin(turn)), radius,
+                       colors[pick], QString()});
+    }
+    return out;
+}
+
 } // namespace vf::model

@@ -198,7 +198,24 @@ struct SwirlStroke {
     friend bool operator==(const SwirlStroke&, const SwirlStroke&) = default;
 };
 
-using Stroke = std::variant<StylusStroke, DropStroke, CombStroke, CircularCombStroke, SwirlStroke>;
+// A brush spattering ink from `time` on: `count` drops, one every `interval` seconds, landing
+// uniformly within `spread` of `center`, of radii uniform in [smallest, largest] and colours drawn
+// from `colors`, all drawn from `seed` (SplitMix64, so the same seed gives the same drops anywhere).
+struct SpatterStroke {
+    double time = 0.0;
+    sim::Vec2 center;
+    double spread = 0.2;
+    int count = 20;
+    double smallest = 0.005, largest = 0.02;
+    std::vector<QColor> colors;
+    std::uint64_t seed = 1;
+    double interval = 0.002;
+
+    std::vector<DropStroke> drops() const;
+    friend bool operator==(const SpatterStroke&, const SpatterStroke&) = default;
+};
+
+using Stroke = std::variant<StylusStroke, DropStroke, CombStroke, CircularCombStroke, SwirlStroke, SpatterStroke>;
 
 struct Scene {
     Canvas canvas;
@@ -221,6 +238,8 @@ inline constexpr std::size_t maxRegions = 100'000;
 inline constexpr std::size_t maxPolygonPoints = 10'000'000;
 inline constexpr std::size_t maxStrokes = 1'000'000;
 inline constexpr int maxTines = 1000;
+inline constexpr int maxSpatterDrops = 10'000;
+inline constexpr int maxSpatterColors = 256;
 inline constexpr double maxCanvasSize = 1e6;
 // Shorter lengths vanish next to coordinates of up to 1e6 (a double holds about 16 digits): a circle
 // that small would have all its vertices on one point, a canvas that narrow an infinite scale.

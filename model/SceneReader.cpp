@@ -298,6 +298,37 @@ const Key<CircularCombStroke> circularCombKeys[] = {
     {u"radius"_s, false, [](const Field& f, CircularCombStroke& c) { c.radius = length(f); }},
 };
 
+// [smallest, largest] drop radii.
+void readRadii(const Field& f, SpatterStroke& s)
+{
+    const QJsonArray range = f.array(2, 2);
+    s.smallest = length(f.element(range, 0));
+    s.largest = length(f.element(range, 1));
+    if (s.smallest > s.largest)
+        f.fail(u"the smallest radius %1 is larger than the largest %2"_s.arg(s.smallest).arg(s.largest));
+}
+
+void readColors(const Field& f, SpatterStroke& s)
+{
+    const QJsonArray list = f.array(1, limits::maxSpatterColors);
+    s.colors.clear();
+    for (qsizetype i = 0; i < list.size(); ++i)
+        s.colors.push_back(color(f.element(list, i)));
+}
+
+const Key<SpatterStroke> spatterKeys[] = {
+    {u"tool"_s, true, readAlready<SpatterStroke>},
+    {u"time"_s, true, [](const Field& f, SpatterStroke& s) { s.time = seconds(f); }},
+    {u"center"_s, true, [](const Field& f, SpatterStroke& s) { s.center = point(f); }},
+    {u"spread"_s, false, [](const Field& f, SpatterStroke& s) { s.spread = f.number(0.0, limits::maxCanvasSize); }},
+    {u"count"_s, false, [](const Field& f, SpatterStroke& s) { s.count = int(f.integer(1, limits::maxSpatterDrops)); }},
+    {u"radius"_s, false, readRadii},
+    {u"colors"_s, true, readColors},
+    // Seeds up to 2^53, which a JSON number holds exactly.
+    {u"seed"_s, false, [](const Field& f, SpatterStroke& s) { s.seed = std::uint64_t(f.integer(0, std::int64_t(1) << 53)); }},
+    {u"interval"_s, false, [](const Field& f, SpatterStroke& s) { s.interval = f.nonNegative(); }},
+};
+
 const Key<SwirlStroke> swirlKeys[] = {
     {u"tool"_s, true, readAlready<SwirlStroke>},
     {u"time"_s, true, [](const Field& f, SwirlStroke& s) { s.time = seconds(f); }},
@@ -308,7 +339,7 @@ const Key<SwirlStroke> swirlKeys[] = {
 
 Stroke readStroke(const Field& field)
 {
-    enum class Tool { Stylus, Drop, Comb, CircularComb, Swirl };
+    enum class Tool { Stylus, Drop, Comb, CircularComb, Swirl, Spatter };
     const Field tool = field.member(u"tool"_s);
     if (!tool.exists())
         tool.fail(u"missing (required)"_s);
@@ -316,7 +347,8 @@ Stroke readStroke(const Field& field)
                                {u"drop"_s, Tool::Drop},
                                {u"comb"_s, Tool::Comb},
                                {u"circular-comb"_s, Tool::CircularComb},
-                               {u"swirl"_s, Tool::Swirl}})) {
+                               {u"swirl"_s, Tool::Swirl},
+                               {u"spatter"_s, Tool::Spatter}})) {
     case Tool::Stylus:
         return readAs(field, stylusKeys);
     case Tool::Drop:
@@ -326,9 +358,11 @@ Stroke readStroke(const Field& field)
     case Tool::CircularComb:
         return readAs(field, circularCombKeys);
     case Tool::Swirl:
+        return readAs(field, swirlKeys);
+    case Tool::Spatter:
         break;
     }
-    return readAs(field, swirlKeys);
+    return readAs(field, spatterKeys);
 }
 
 // ---- the whole scene --------------------------------------------------------------------------
@@ -456,6 +490,9 @@ void checkVertexBudget(const Scene& scene, const KeyPath& root)
     for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
         if (const auto* drop = std::get_if<DropStroke>(&scene.strokes[i]))
             add(CircleShape{drop->center, drop->radius}, itemPath(root, u"strokes"_s, i).key(u"radius"_s));
+        if (const auto* spatter = std::get_if<SpatterStroke>(&scene.strokes[i]))
+            for (const DropStroke& drop : spatter->drops())
+                add(CircleShape{drop.center, drop.radius}, itemPath(root, u"strokes"_s, i).key(u"count"_s));
     }
 }
 

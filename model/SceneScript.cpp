@@ -20,6 +20,9 @@ SceneScript::SceneScript(const Scene& scene)
             m_drops.push_back(*drop);
         } else if (const auto* stylus = std::get_if<StylusStroke>(&s)) {
             m_strokes.push_back(*stylus);
+        } else if (const auto* spatter = std::get_if<SpatterStroke>(&s)) {
+            const std::vector<DropStroke> drops = spatter->drops();
+            m_drops.insert(m_drops.end(), drops.begin(), drops.end());
         } else if (const auto* swirl = std::get_if<SwirlStroke>(&s)) {
             m_maps.push_back({swirl->time, swirl->map()});
         } else if (const auto* comb = std::get_if<CombStroke>(&s)) {

@@ -149,6 +149,22 @@ QJsonObject toJson(const CircularCombStroke& c)
     return comb;
 }
 
+QJsonObject toJson(const SpatterStroke& s)
+{
+    QJsonArray colors;
+    for (const QColor& c : s.colors)
+        colors.append(colorText(c));
+    return {{u"tool"_s, u"spatter"_s},
+            {u"time"_s, s.time},
+            {u"center"_s, pair(s.center)},
+            {u"spread"_s, s.spread},
+            {u"count"_s, s.count},
+            {u"radius"_s, QJsonArray{s.smallest, s.largest}},
+            {u"colors"_s, colors},
+            {u"seed"_s, double(s.seed)},
+            {u"interval"_s, s.interval}};
+}
+
 QJsonObject toJson(const SwirlStroke& s)
 {
     return {{u"tool"_s, u"swirl"_s}, {u"time"_s, s.time}, {u"center"_s, pair(s.center)}, {u"radius"_s, s.radius},

@@ -2,6 +2,7 @@
 // and the picture it hands out carries the scene's names, colours and visibility.
 #include "model/SceneRunner.h"
 
+#include <QSet>
 #include <QTest>
 
 #include <glm/geometric.hpp>
@@ -96,6 +97,37 @@ private slots:
         QCOMPARE(runner.simulation().contours(), direct->contours());
         QVERIFY(sim::hausdorffDistance(runner.simulation().regions()[0][0],
                                        SceneRunner(stillScene()).simulation().regions()[0][0]) > 0.01);
+    }
+
+    // A spatter is its drops: as many as asked, within the spread, of radii in the range and
+    // colours from the list, the same for the same seed, and landing one interval apart.
+    void spatterIsItsDrops()
+    {
+        const SpatterStroke brush{0.1, {0.5, 0.5}, 0.2, 40, 0.01, 0.03, {Qt::red, Qt::blue, Qt::green}, 7, 0.005};
+        const std::vector<DropStroke> drops = brush.drops();
+        QCOMPARE(drops.size(), std::size_t(40));
+        QSet<QRgb> colours;
+        for (std::size_t i = 0; i < drops.size(); ++i) {
+            QVERIFY(glm::distance(drops[i].center, brush.center) <= 0.2);
+            QVERIFY(drops[i].radius >= 0.01 && drops[i].radius <= 0.03);
+            QCOMPARE(drops[i].time, 0.1 + 0.005 * double(i));
+            colours.insert(drops[i].color.rgb());
+        }
+        QCOMPARE(colours.size(), 3);
+        QCOMPARE(brush.drops(), drops);
+        SpatterStroke other = brush;
+        other.seed = 8;
+        QVERIFY(other.drops() != drops);
+        // The first drop as docs/scene-format.md defines it for seed 7 (computed independently).
+        QVERIFY(glm::distance(drops[0].center, sim::Vec2(0.6241786179167859, 0.5131476533239883)) < 1e-12);
+        QVERIFY(std::abs(drops[0].radius - 0.02801521361213767) < 1e-15);
+        QCOMPARE(drops[0].color, QColor(Qt::blue));
+
+        Scene scene = stillScene();
+        scene.strokes = {brush};
+        SceneRunner runner(scene);
+        runner.step(0.3);
+        QCOMPARE(runner.simulation().regionCount(), 41);
     }
 
     // A circular comb's tines in the water trace their arcs about the centre from the ray toward +x.
