@@ -219,8 +219,10 @@ void SimulationPanel::connectEdits()
 
 void SimulationPanel::setSettings(const model::EngineSettings& settings)
 {
+    // The document hands back the settings this panel just edited: a note on them stays.
+    if (settings != m_settings)
+        m_memoryNote->hide();
     m_settings = settings;
-    m_memoryNote->hide();
     showSettings();
 }
 

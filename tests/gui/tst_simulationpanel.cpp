@@ -411,10 +411,19 @@ void TestSimulationPanel::maxVerticesBeyondMemoryAreLowered()
     QTest::keyClick(maxVertices, Qt::Key_Up);  // no step past it either
     QCOMPARE(spy.count(), 1);
     QCOMPARE(maxVertices->value(), 4'986'176);
+    // The window hands the edited settings back from the document: the note stays; other
+    // settings (an undo, another document) take it away.
+    panel->setSettings(edited(spy));
+    QVERIFY(note->isVisible());
+    panel->setSettings(testSettings());
+    QVERIFY(!note->isVisible());
+    typeAndCommit(maxVertices, QStringLiteral("10000000"));
+    QCOMPARE(spy.count(), 2);
+    QVERIFY(note->isVisible());
 
     typeAndCommit(maxVertices, QStringLiteral("5000"));
-    QCOMPARE(spy.count(), 2);
-    QCOMPARE(edited(spy, 1).tracking.maxVertices, 5000);
+    QCOMPARE(spy.count(), 3);
+    QCOMPARE(edited(spy, 2).tracking.maxVertices, 5000);
     QVERIFY(!note->isVisible());
 }
 
