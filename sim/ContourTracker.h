@@ -19,12 +19,13 @@ namespace vf::sim {
 // the midpoint of the edge's *previous* endpoints (eq. 2), so new vertices land on the true curve.
 using MotionMap = std::function<Vec2(Vec2 p)>;
 
-// An instantaneous motion given as an exact map (a drop's push, a comb), depicted exactly: besides
-// the spacing, refinement splits an edge where its chord strays from the mapped curve by more than
-// `chordTolerance` (at its middle, or at a crease of the map: a line along which the map bends
-// sharply and is not smooth, such as a comb's tine), and collapses no vertex whose removal would
-// leave a chord straying that far. `crease(a, b)` is where the segment a–b of positions before the
-// motion crosses a crease, as a fraction along it (the crossing nearest its middle), if it does.
+// A motion as refinement takes it. An instantaneous one given as an exact map (a drop's push, a
+// tool's) is depicted exactly: besides the spacing, refinement splits an edge where its chord
+// strays from the mapped curve by more than `chordTolerance` (at its middle, or at a crease of the
+// map: a line along which it bends sharply and is not smooth, such as a comb's tine), and
+// collapses no vertex whose removal would leave a chord straying that far. `crease(a, b)` is where
+// the segment a–b of positions before the motion crosses a crease, as a fraction along it (the
+// crossing nearest its middle), if it does. The flow's step has neither (tolerance 0).
 struct ExactMotion {
     MotionMap map;
     std::function<std::optional<double>(Vec2 a, Vec2 b)> crease;
