@@ -15,16 +15,15 @@
 #include "sim/opencl/ContourCodes.h"
 #include "sim/opencl/KernelSources.h"
 #include "sim/opencl/Launch.h"
+#include "sim/opencl/MapParameters.h"
 #include "sim/opencl/Scan.h"
 
-#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <charconv>
 #include <cmath>
-#include <numbers>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -55,46 +54,6 @@ void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Motion& motion)
     kernel.setArg(index++, motion.c);
     kernel.setArg(index++, motion.rewind);
     kernel.setArg(index++, motion.chordTolerance);
-}
-
-// A tool's map as contours.cl takes it (MOTION_ARGS): its kind and parameters; none for a map that
-// moves nothing.
-struct MapParameters {
-    cl_int kind;
-    cl_float4 a{}, b{}, c{};
-};
-
-std::optional<MapParameters> parametersOf(const Comb& comb)
-{
-    const Vec2 stroke = comb.to - comb.from;
-    const double length = glm::length(stroke);
-    if (!(length > 0.0) || comb.tines < 1)
-        return std::nullopt;
-    const Vec2 along = stroke / length;
-    // The wave's phase at the origin: t is measured from the stroke's middle.
-    const double waveNumber = 2.0 * std::numbers::pi / comb.wavelength;
-    const double phase = comb.phase - waveNumber * glm::dot(0.5 * (comb.from + comb.to), along);
-    return MapParameters{motionComb,
-                         {{cl_float(comb.from.x), cl_float(comb.from.y), cl_float(along.x), cl_float(along.y)}},
-                         {{cl_float(length), cl_float(comb.sharpness), cl_float(comb.spacing), cl_float(comb.tines)}},
-                         {{cl_float(comb.amplitude), cl_float(waveNumber), cl_float(phase), 0.0f}}};
-}
-
-std::optional<MapParameters> parametersOf(const CircularComb& comb)
-{
-    if (comb.angle == 0.0 || comb.tines < 1)
-        return std::nullopt;
-    return MapParameters{motionCircularComb,
-                         {{cl_float(comb.centre.x), cl_float(comb.centre.y), cl_float(comb.radius), cl_float(comb.spacing)}},
-                         {{cl_float(comb.angle), cl_float(comb.sharpness), cl_float(comb.tines), 0.0f}}};
-}
-
-std::optional<MapParameters> parametersOf(const Swirl& swirl)
-{
-    if (swirl.angle == 0.0)
-        return std::nullopt;
-    return MapParameters{motionSwirl,
-                         {{cl_float(swirl.centre.x), cl_float(swirl.centre.y), cl_float(swirl.radius), cl_float(swirl.angle)}}};
 }
 
 // A kernel argument of the accumulation type acc_t: double on fp64 devices, else float.
@@ -907,7 +866,7 @@ bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
 bool DeviceContours::applyMap(const ExactMap& map, const FlowBinding& flow)
 {
     return guarded([&] {
-        const std::optional<MapParameters> p = std::visit([](const auto& m) { return parametersOf(m); }, map);
+        const std::optional<MapParameters> p = mapParameters(map);
         if (!p || m->vertices == 0)
             return true;
         return m->move(flow, m->mapMotion(p->kind, p->a, p->b, p->c));

@@ -1,0 +1,19 @@
+#pragma once
+// A tool's exact map (sim/ExactMap.h) as the contour kernels take it (MOTION_ARGS in contours.cl):
+// its motion kind and up to three vectors of parameters, in float.
+#include "sim/ExactMap.h"
+#include "sim/opencl/OpenCl.h"
+
+#include <optional>
+
+namespace vf::sim::opencl {
+
+struct MapParameters {
+    cl_int kind;
+    cl_float4 a{}, b{}, c{};
+};
+
+// None for a map that moves nothing.
+std::optional<MapParameters> mapParameters(const ExactMap& map);
+
+} // namespace vf::sim::opencl
