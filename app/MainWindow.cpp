@@ -6,6 +6,7 @@
 
 #include "app/ClipboardExport.h"
 #include "app/ExportDialog.h"
+#include "app/PaletteDock.h"
 #include "app/RecentFiles.h"
 #include "app/Recovery.h"
 #include "app/SimulationPanel.h"
@@ -67,6 +68,8 @@ MainWindow::MainWindow(QWidget* parent)
     setHistoryBudgetMb(QSettings().value(historyBudgetKey, int(model::Document::defaultHistoryBudget >> 20)).toInt());
     resize(1280, 800);
     newDocument();
+    if (const QStringList gone = m_paletteDock->loadRemembered(); !gone.isEmpty())
+        statusBar()->showMessage(tr("Palette forgotten: %1").arg(gone.front()), 10000);
 }
 
 MainWindow::~MainWindow()
@@ -278,6 +281,13 @@ void MainWindow::createDocks()
 {
     m_regionsDock = new RegionsDock(m_document, m_regionModel, m_simulation, this);
     addDockWidget(Qt::RightDockWidgetArea, m_regionsDock);
+
+    m_paletteDock = new PaletteDock(this);
+    addDockWidget(Qt::LeftDockWidgetArea, m_paletteDock);
+    resizeDocks({m_paletteDock}, {m_paletteDock->minimumSizeHint().width()}, Qt::Horizontal);
+    m_paletteDock->setInkColour(m_inkColor);
+    connect(m_paletteDock, &PaletteDock::colourPicked, this, &MainWindow::setInkColor);
+    connect(m_paletteDock, &PaletteDock::problem, this, [this](const QString& title, const QString& line) { m_report(title, line); });
 
     auto* history = new QDockWidget(tr("History"), this);
     history->setObjectName(QStringLiteral("historyDock"));
@@ -495,6 +505,7 @@ void MainWindow::setHistoryBudgetMb(int megabytes)
 void MainWindow::setInkColor(const QColor& color)
 {
     m_inkColor = color;
+    m_paletteDock->setInkColour(color);
     if (auto* button = findChild<QPushButton*>(QStringLiteral("inkColor"))) {
         QPixmap swatch(16, 16);
         swatch.fill(color);

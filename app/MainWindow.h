@@ -20,6 +20,7 @@
 
 namespace vf::app {
 
+class PaletteDock;
 class RecentFiles;
 class Recovery;
 class SimulationPanel;
@@ -103,6 +104,7 @@ private:
     RegionsDock* m_regionsDock = nullptr;
     QUndoView* m_historyView = nullptr;
     SimulationPanel* m_panel = nullptr;
+    PaletteDock* m_paletteDock = nullptr;
     TextToolBar* m_textOptions = nullptr;
     Recovery* m_recovery = nullptr;
     RecentFiles* m_recentFiles = nullptr;

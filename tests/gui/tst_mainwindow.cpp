@@ -85,19 +85,6 @@ double largestMove(const Geometry& a, const Geometry& b)
     return most;
 }
 
-// Runs `act` on the modal dialog of type T once one is open (the action that opens it blocks in
-// its own event loop until `act` closes it).
-template <typename T>
-void whenModal(std::function<void(T*)> act)
-{
-    QTimer::singleShot(10, qApp, [act] {
-        if (auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget()))
-            act(dialog);
-        else
-            whenModal<T>(act);
-    });
-}
-
 } // namespace
 
 class TestMainWindow : public QObject {
@@ -379,7 +366,7 @@ private slots:
     {
         MainWindow& w = *m_window;
         bool asked = false;
-        whenModal<QFileDialog>([&asked](QFileDialog* dialog) {
+        test::whenModal<QFileDialog>([&asked](QFileDialog* dialog) {
             asked = true;
             dialog->reject();
         });
@@ -558,7 +545,7 @@ private slots:
     {
         MainWindow& w = *m_window;
         const QString svg = m_dir.filePath(QStringLiteral("shown.svg"));
-        whenModal<ExportDialog>([svg](ExportDialog* dialog) {
+        test::whenModal<ExportDialog>([svg](ExportDialog* dialog) {
             test::child<QLineEdit>(*dialog, "path")->setText(svg);
             QTest::mouseClick(test::child<QPushButton>(*dialog, "export"), Qt::LeftButton);
         });
@@ -575,7 +562,7 @@ private slots:
         QSettings().remove(QStringLiteral("files/saveFolder"));
         QString offered;
         const auto saveAsByMouse = [&w, &offered](const QString& typed) {
-            whenModal<QFileDialog>([&offered, typed](QFileDialog* dialog) {
+            test::whenModal<QFileDialog>([&offered, typed](QFileDialog* dialog) {
                 offered = dialog->selectedFiles().value(0);
                 if (typed.isEmpty())
                     return dialog->reject();
@@ -865,7 +852,7 @@ private slots:
         QVERIFY2(!font->text().contains(QStringLiteral("Oblique")) && !font->text().contains(QStringLiteral("Italic")),
                  qPrintable(font->text()));
         QFont offered;
-        whenModal<QFontDialog>([&offered](QFontDialog* dialog) {
+        test::whenModal<QFontDialog>([&offered](QFontDialog* dialog) {
             offered = dialog->currentFont();
             dialog->reject();
         });
