@@ -219,9 +219,9 @@ void bareRk4KernelBenchmark(benchmark::State& state, std::int64_t target)
                             motion.size() * sizeof(cl_float4), motion.data());
     const cl::Buffer status(device->context(), CL_MEM_READ_WRITE, statusWords * sizeof(cl_uint));
     queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
-    // MOTION_ARGS of contours.cl: RK4 through the flow.
+    // MOTION_ARGS of contours.cl: RK4 through the flow (no map, no chord tolerance).
     const cl_int rewind = 1;
-    const cl_float2 noCentre{{0.0f, 0.0f}};
+    const cl_float4 noMap{};
     const auto n = cl_uint(target);
 
     double seconds = 0.0;
@@ -231,8 +231,8 @@ void bareRk4KernelBenchmark(benchmark::State& state, std::int64_t target)
         queue.finish();
         state.ResumeTiming();
         const auto start = Clock::now();
-        launch(queue, advect, laneGroups(n), fluid.binding(time - kDt, time), motionFlow, noCentre, cl_float(0),
-               rewind, points, n, points, cl_int(0), status);
+        launch(queue, advect, laneGroups(n), fluid.binding(time - kDt, time), motionFlow, noMap, noMap, noMap, rewind,
+               cl_float(0), points, n, points, cl_int(0), status);
         queue.finish();
         seconds += std::chrono::duration<double>(Clock::now() - start).count();
     }

@@ -1,3 +1,6 @@
+// The document (model/Document.h): opening and saving, the regions, the commands, the history's
+// memory. About 550 lines, kept as one because every part works on the same undo stack and command
+// records; its sections below are the seams to split along should one part grow.
 #include "model/Document.h"
 
 #include <QSet>

@@ -1,5 +1,5 @@
 #pragma once
-// Optional exact area preservation of a contour (past the paper; docs/ARCHITECTURE.md, "Area correction").
+// Optional exact area preservation of a contour (past the paper; docs/method.md, "Area correction").
 #include "sim/Geometry.h"
 
 namespace vf::sim {

@@ -1,6 +1,6 @@
 #pragma once
 // Contour surgery where a layer of ink has thinned below what positions resolve (past the paper;
-// docs/ARCHITECTURE.md, "Topology"). Flow toward a free-slip wall thins a layer exponentially, and
+// docs/method.md, "Topology"). Flow toward a free-slip wall thins a layer exponentially, and
 // once its two sides come within a few single-precision spacings of each other, rounding alone can
 // make them cross. Such a layer is far thinner than anything a picture shows, so it is cut there
 // instead: the contour is split into two loops at the pinch, and a loop too thin to show is dropped.

@@ -1,7 +1,9 @@
-// Refinement (paper §3.1, §3.3) by stream compaction. Each pass decides, for every vertex at
-// once, how many vertices it becomes (a split edge: 1 + the vertices inserted after it; a
-// collapse: 0 or 1), scans those counts and scatters the store into the other buffer, so every
-// contour stays contiguous and in order with no per-contour serial work and perfect balance.
+// Refinement (paper §3.1, §3.3) by stream compaction; the split and collapse passes share their
+// tile bookkeeping and vertex helpers, so they stay in one file (about 570 lines). Each pass
+// decides, for every vertex at once, how many vertices it becomes (a split edge: 1 + the vertices
+// inserted after it; a collapse: 0 or 1), scans those counts and scatters the store into the other
+// buffer, so every contour stays contiguous and in order with no per-contour serial work and
+// perfect balance.
 // The counting kernels fuse the first level of the scan: they leave each vertex's offset within
 // its tile of VF_LOCAL vertices and each tile's total, which Scan turns into tile bases.
 //

@@ -1,5 +1,5 @@
 // Engine to file: scenes played by model::SceneRunner, exported by render::exportDrawing in polyline
-// mode, and the SVG read back must hold the engine's polygons (docs/ARCHITECTURE.md, "Files":
+// mode, and the SVG read back must hold the engine's polygons (docs/writing-files.md, "Coordinates":
 // coordinates rounded to 1e-6 of the canvas, no vertex dropped on these scenes), named after the
 // regions, with no crossings and no repeated vertex: real marbled contours come close together,
 // and rounding must not make them touch.

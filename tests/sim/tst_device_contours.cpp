@@ -471,7 +471,7 @@ void TestDeviceContours::singleVortexReturns_data()
 
 void TestDeviceContours::singleVortexReturns()
 {
-    // The accuracy bar (docs/ARCHITECTURE.md, "Accuracy"): circle r = 0.15 at (0.5, 0.75), period 8, uniform spacing 1/256, in float32.
+    // The accuracy bar (docs/method.md, "Accuracy"): circle r = 0.15 at (0.5, 0.75), period 8, uniform spacing 1/256, in float32.
     QFETCH(bool, areaCorrection);
     QFETCH(double, areaTolerance);
     auto settings = tracking(1.0 / 256, false);

@@ -1,4 +1,4 @@
-// Contour tracking accuracy (paper §3.1, §3.3; docs/ARCHITECTURE.md, "Accuracy"), on every backend.
+// Contour tracking accuracy (paper §3.1, §3.3; docs/method.md, "Accuracy"), on every backend.
 #include "Backends.h"
 #include "Flows.h"
 
@@ -201,7 +201,7 @@ void TestTracking::singleVortexReturns_data()
 
 void TestTracking::singleVortexReturns()
 {
-    // The accuracy bar (docs/ARCHITECTURE.md, "Accuracy"): circle r = 0.15 at (0.5, 0.75), period 8, uniform spacing 1/256.
+    // The accuracy bar (docs/method.md, "Accuracy"): circle r = 0.15 at (0.5, 0.75), period 8, uniform spacing 1/256.
     QFETCH(QString, backend);
     VF_REQUIRE_BACKEND(backend);
     QFETCH(bool, areaCorrection);
