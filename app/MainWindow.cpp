@@ -284,7 +284,7 @@ void MainWindow::createDocks()
 
     m_paletteDock = new PaletteDock(this);
     addDockWidget(Qt::LeftDockWidgetArea, m_paletteDock);
-    resizeDocks({m_paletteDock}, {m_paletteDock->minimumSizeHint().width()}, Qt::Horizontal);
+    resizeDocks({m_paletteDock}, {m_paletteDock->minimumSizeHint().width()}, Qt::Horizontal);  // the canvas keeps the room
     m_paletteDock->setInkColour(m_inkColor);
     connect(m_paletteDock, &PaletteDock::colourPicked, this, &MainWindow::setInkColor);
     connect(m_paletteDock, &PaletteDock::problem, this, [this](const QString& title, const QString& line) { m_report(title, line); });

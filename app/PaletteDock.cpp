@@ -9,7 +9,7 @@
 #include <QHBoxLayout>
 #include <QListWidget>
 #include <QPainter>
-#include <QPushButton>
+#include <QToolButton>
 #include <QSettings>
 #include <QVBoxLayout>
 
@@ -54,16 +54,23 @@ PaletteDock::PaletteDock(QWidget* parent)
     // The swatch of the current ink framed, plainly: icon mode otherwise marks it with a sliver.
     m_swatches->setStyleSheet(QStringLiteral("QListWidget::item:selected { border: 2px solid palette(highlight); }"));
 
-    auto* loadButton = new QPushButton(tr("Load…"));
-    auto* saveButton = new QPushButton(tr("Save…"));
-    auto* addButton = new QPushButton(tr("Add ink"));
+    // Narrow: the dock sits beside the canvas, which should keep the room.
+    m_choice->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_choice->setMinimumContentsLength(8);
+    auto* loadButton = new QToolButton;
+    auto* saveButton = new QToolButton;
+    auto* addButton = new QToolButton;
+    loadButton->setText(tr("Load…"));
+    saveButton->setText(tr("Save…"));
+    addButton->setText(tr("Add ink"));
     loadButton->setObjectName(QStringLiteral("paletteLoad"));
     saveButton->setObjectName(QStringLiteral("paletteSave"));
     addButton->setObjectName(QStringLiteral("paletteAdd"));
     addButton->setToolTip(tr("Put the current ink into this palette"));
     auto* buttons = new QHBoxLayout;
-    for (QPushButton* b : {loadButton, saveButton, addButton})
+    for (QToolButton* b : {loadButton, saveButton, addButton})
         buttons->addWidget(b);
+    buttons->addStretch();
     auto* content = new QWidget;
     auto* layout = new QVBoxLayout(content);
     layout->addWidget(m_choice);
@@ -77,9 +84,9 @@ PaletteDock::PaletteDock(QWidget* parent)
     connect(m_swatches, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
         emit colourPicked(item->data(Qt::UserRole).value<QColor>());
     });
-    connect(loadButton, &QPushButton::clicked, this, &PaletteDock::chooseFile);
-    connect(saveButton, &QPushButton::clicked, this, &PaletteDock::saveShown);
-    connect(addButton, &QPushButton::clicked, this, &PaletteDock::addInk);
+    connect(loadButton, &QToolButton::clicked, this, &PaletteDock::chooseFile);
+    connect(saveButton, &QToolButton::clicked, this, &PaletteDock::saveShown);
+    connect(addButton, &QToolButton::clicked, this, &PaletteDock::addInk);
     showPalette(0);
 }
 
