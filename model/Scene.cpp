@@ -194,22 +194,44 @@ sim::CircularComb CircularCombStroke::map() const
     return {center, innerRadius, tines, spacing, sharpness, angle * std::numbers::pi / 180.0};
 }
 
-StylusStroke CircularCombStroke::tineStroke(int k) const
+namespace {
+
+// A stylus of radius `width` along the circle of radius `ring` about `center`, from angle `from`
+// through `turn` radians more (counter-clockwise) between `time` and `time + duration`.
+StylusStroke arcStroke(sim::Vec2 center, double ring, double from, double turn, double width, double time,
+                       double duration)
 {
-    const double turn = angle * std::numbers::pi / 180.0, ring = innerRadius + k * spacing;
     const int pieces = std::clamp(int(std::ceil(64.0 * std::abs(turn) / (2.0 * std::numbers::pi))), 1, pathPoints - 1);
-    StylusStroke path{radius, {}, {}};
+    StylusStroke path{width, {}, {}};
     for (int i = 0; i <= pieces; ++i) {
         const double s = double(i) / pieces;
-        path.points.push_back(center + ring * sim::Vec2(std::cos(s * turn), std::sin(s * turn)));
+        path.points.push_back(center + ring * sim::Vec2(std::cos(from + s * turn), std::sin(from + s * turn)));
         path.times.push_back(time + s * duration);
     }
     return path;
 }
 
+} // namespace
+
+StylusStroke CircularCombStroke::tineStroke(int k) const
+{
+    return arcStroke(center, innerRadius + k * spacing, 0.0, angle * std::numbers::pi / 180.0, radius, time, duration);
+}
+
 sim::Swirl SwirlStroke::map() const
 {
     return {center, radius, angle * std::numbers::pi / 180.0};
+}
+
+std::vector<StylusStroke> SwirlStroke::ringStrokes(int k) const
+{
+    const double width = radius / rings, ring = (k + 0.5) * width;
+    const int count = int(std::ceil(2.0 * std::numbers::pi * (k + 0.5)));  // one a width around the ring
+    std::vector<StylusStroke> strokes;
+    for (int j = 0; j < count; ++j)
+        strokes.push_back(arcStroke(center, ring, 2.0 * std::numbers::pi * j / count, map().angleAt(ring), width, time,
+                                    duration));
+    return strokes;
 }
 
 namespace {

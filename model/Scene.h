@@ -186,15 +186,22 @@ struct CircularCombStroke {
     friend bool operator==(const CircularCombStroke&, const CircularCombStroke&) = default;
 };
 
-// A swirl (vortex) at `time`, always exact (sim/Whirl.h): the ink about `center` turned by `angle`
-// degrees there, fading out past `radius`.
+// A swirl (vortex) at `time`: the ink about `center` turned by `angle` degrees there, fading out
+// past `radius`. Exactly, as the map of sim/Whirl.h; or in the water, as `rings` rings of styluses
+// about the centre, ring k at (k + ½)·radius/rings, its styluses as wide as the rings' spacing and
+// spread evenly around it (as many as cover it), each turning as far as the map turns its circle,
+// all together for `duration` seconds: a wheel of fluid turning faster towards its middle.
 struct SwirlStroke {
     double time = 0.0;
     sim::Vec2 center;
     double radius = 0.1;
     double angle = 180.0;
+    CombStroke::Mode mode = CombStroke::Mode::Exact;
+    double duration = 0.5;  // water
+    int rings = 4;          // water
 
     sim::Swirl map() const;
+    std::vector<StylusStroke> ringStrokes(int k) const;
     friend bool operator==(const SwirlStroke&, const SwirlStroke&) = default;
 };
 

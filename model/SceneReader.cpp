@@ -336,6 +336,9 @@ const Key<SwirlStroke> swirlKeys[] = {
     {u"center"_s, true, [](const Field& f, SwirlStroke& s) { s.center = point(f); }},
     {u"radius"_s, true, [](const Field& f, SwirlStroke& s) { s.radius = length(f); }},
     {u"angle"_s, true, [](const Field& f, SwirlStroke& s) { s.angle = turnDegrees(f); }},
+    {u"mode"_s, false, [](const Field& f, SwirlStroke& s) { s.mode = combMode(f); }},
+    {u"duration"_s, false, [](const Field& f, SwirlStroke& s) { s.duration = f.positive(kHuge); }},
+    {u"rings"_s, false, [](const Field& f, SwirlStroke& s) { s.rings = int(f.integer(1, limits::maxTines)); }},
 };
 
 Stroke readStroke(const Field& field)
@@ -404,12 +407,14 @@ void checkStrokesFitFlow(const Scene& scene, const KeyPath& root)
     for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
         const auto* comb = std::get_if<CombStroke>(&scene.strokes[i]);
         const auto* circular = std::get_if<CircularCombStroke>(&scene.strokes[i]);
+        const auto* swirl = std::get_if<SwirlStroke>(&scene.strokes[i]);
         if (std::holds_alternative<StylusStroke>(scene.strokes[i]))
             itemPath(root, u"strokes"_s, i).key(u"tool"_s).fail(
                 u"a stylus needs \"flow\": {\"type\": \"fluid\"}: an analytic flow is prescribed and does not react to it"_s);
-        if ((comb && comb->mode == CombStroke::Mode::Water) || (circular && circular->mode == CombStroke::Mode::Water))
+        if ((comb && comb->mode == CombStroke::Mode::Water) || (circular && circular->mode == CombStroke::Mode::Water) ||
+            (swirl && swirl->mode == CombStroke::Mode::Water))
             itemPath(root, u"strokes"_s, i).key(u"mode"_s).fail(
-                u"a comb in the water needs \"flow\": {\"type\": \"fluid\"}; use \"mode\": \"exact\" with an analytic flow"_s);
+                u"a tool in the water needs \"flow\": {\"type\": \"fluid\"}; use \"mode\": \"exact\" with an analytic flow"_s);
     }
 }
 

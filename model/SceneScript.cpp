@@ -24,7 +24,12 @@ SceneScript::SceneScript(const Scene& scene)
             const std::vector<DropStroke> drops = spatter->drops();
             m_drops.insert(m_drops.end(), drops.begin(), drops.end());
         } else if (const auto* swirl = std::get_if<SwirlStroke>(&s)) {
-            m_maps.push_back({swirl->time, swirl->map()});
+            if (swirl->mode == CombStroke::Mode::Exact)
+                m_maps.push_back({swirl->time, swirl->map()});
+            else
+                for (int k = 0; k < swirl->rings; ++k)
+                    for (StylusStroke& stroke : swirl->ringStrokes(k))
+                        m_strokes.push_back(std::move(stroke));
         } else if (const auto* comb = std::get_if<CombStroke>(&s)) {
             addComb(*comb);
         } else {

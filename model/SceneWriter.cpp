@@ -167,8 +167,15 @@ QJsonObject toJson(const SpatterStroke& s)
 
 QJsonObject toJson(const SwirlStroke& s)
 {
-    return {{u"tool"_s, u"swirl"_s}, {u"time"_s, s.time}, {u"center"_s, pair(s.center)}, {u"radius"_s, s.radius},
-            {u"angle"_s, s.angle}};
+    QJsonObject swirl{{u"tool"_s, u"swirl"_s}, {u"time"_s, s.time}, {u"center"_s, pair(s.center)},
+                      {u"radius"_s, s.radius}, {u"angle"_s, s.angle}};
+    const bool exact = s.mode == CombStroke::Mode::Exact;
+    swirl.insert(u"mode"_s, exact ? u"exact"_s : u"water"_s);
+    if (!exact) {
+        swirl.insert(u"duration"_s, s.duration);
+        swirl.insert(u"rings"_s, s.rings);
+    }
+    return swirl;
 }
 
 template <typename... Ts>

@@ -35,10 +35,15 @@ std::optional<double> CircularComb::tineCrossing(Vec2 a, Vec2 b) const
     return wholeCrossing(wa, wb, last);
 }
 
+double Swirl::angleAt(double rho) const
+{
+    const double r = rho / radius;
+    return angle * std::exp(-r * r);
+}
+
 Vec2 Swirl::operator()(Vec2 p) const
 {
-    const double rho = glm::distance(p, centre) / radius;
-    return turned(p, centre, angle * std::exp(-rho * rho));
+    return turned(p, centre, angleAt(glm::distance(p, centre)));
 }
 
 } // namespace vf::sim

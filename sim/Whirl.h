@@ -37,6 +37,8 @@ struct Swirl {
 
     Vec2 operator()(Vec2 p) const;
     Swirl inverse() const { return {centre, radius, -angle}; }
+    // How far (radians) the points at distance `rho` from the centre turn.
+    double angleAt(double rho) const;
 };
 
 } // namespace vf::sim

@@ -84,6 +84,8 @@ Scene richScene()
     s.strokes.push_back(CircularCombStroke{CombStroke::Mode::Water, 0.3, {0.5, 0.4}, 0.05, 4, 1.0 / 60.0, -270.0, 0.02,
                                            0.9, 0.015});
     s.strokes.push_back(CircularCombStroke{CombStroke::Mode::Exact, 0.4, {0.45, 0.5}, 0.2, 1, 0.0, 3600.0, 1e-3, 0.5, 0.03});
+    s.strokes.push_back(SwirlStroke{0.45, {0.5, 0.5}, 0.15, -90.0});
+    s.strokes.push_back(SwirlStroke{0.5, {0.4, 0.6}, 0.1, 270.0, CombStroke::Mode::Water, 0.3, 6});
     s.strokes.push_back(SwirlStroke{0.6, {0.1, 1.0 / 3.0}, 0.25, -3600.0});
     s.strokes.push_back(SpatterStroke{0.7, {0.4, 0.6}, 1.0 / 3.0, 10'000, 1e-3, 1e-3, {QColor(1, 2, 3), QColor(250, 0, 5, 17)},
                                       (std::uint64_t(1) << 53) - 7, 0.0});

@@ -146,6 +146,47 @@ private slots:
         QCOMPARE(spun.tineStroke(0).points.size(), std::size_t(pathPoints));
     }
 
+    // A swirl in the water: rings of styluses about the centre, as many on each ring as cover it,
+    // each turning as far as the exact swirl turns its circle; together they turn the ink about the
+    // centre the way the exact swirl does (counter-clockwise for a positive angle).
+    void waterSwirlTurnsTheInkLikeTheVortex()
+    {
+        const SwirlStroke vortex{0.01, {0.5, 0.5}, 0.2, 120.0, CombStroke::Mode::Water, 0.4, 4};
+        const std::vector<StylusStroke> inner = vortex.ringStrokes(0), outer = vortex.ringStrokes(3);
+        QCOMPARE(inner.size(), std::size_t(4));   // ⌈2π·½⌉
+        QCOMPARE(outer.size(), std::size_t(22));  // ⌈2π·3½⌉
+        QCOMPARE(inner[0].radius, 0.05);
+        QVERIFY(std::abs(glm::distance(inner[0].points.back(), vortex.center) - 0.025) < 1e-12);
+        QVERIFY(std::abs(glm::distance(outer[5].points.back(), vortex.center) - 0.175) < 1e-12);
+        const double innerTurn = std::atan2(inner[0].points.back().y - 0.5, inner[0].points.back().x - 0.5);
+        QVERIFY(std::abs(innerTurn - vortex.map().angleAt(0.025)) < 1e-12);
+        QCOMPARE(outer[0].times.back(), 0.41);
+
+        Scene rings;  // fluid
+        rings.regions.push_back({QStringLiteral("bar"), Qt::black, true, RectShape{{0.51, 0.49}, {0.08, 0.02}}});
+        Scene swirl = rings;
+        swirl.strokes.push_back(vortex);
+        for (int k = 0; k < vortex.rings; ++k)
+            for (const StylusStroke& stroke : vortex.ringStrokes(k))
+                rings.strokes.push_back(stroke);
+        SceneRunner bySwirl(swirl), byRings(rings);
+        for (int step = 0; step < 25; ++step) {
+            bySwirl.step(0.02);
+            byRings.step(0.02);
+        }
+        QCOMPARE(bySwirl.simulation().contours(), byRings.simulation().contours());
+        // The bar lay along +x from near the centre; the exact swirl turns its middle by about 110°
+        // counter-clockwise, and the water turns it the same way, by some tens of degrees at least.
+        const auto regions = bySwirl.simulation().regions();
+        sim::Vec2 sum(0.0);
+        for (const sim::Vec2& p : regions[0][0])
+            sum += p;
+        const sim::Vec2 middle = sum / double(regions[0][0].size()) - vortex.center;
+        const double turned = std::atan2(middle.y, middle.x) * 180.0 / std::numbers::pi;
+        qInfo() << "the bar turned" << turned << "degrees";
+        QVERIFY2(turned > 30.0 && turned < 180.0, qPrintable(QStringLiteral("the bar turned %1°").arg(turned)));
+    }
+
     // A comb in the water is its tines' stylus strokes, moving together.
     void waterCombIsItsTines()
     {
