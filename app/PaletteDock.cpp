@@ -107,12 +107,10 @@ void PaletteDock::setInkColour(const QColor& colour)
     markInk();
 }
 
-bool PaletteDock::load(const QString& path)
+void PaletteDock::load(const QString& path)
 {
-    const QString error = add(path);
-    if (!error.isEmpty())
+    if (const QString error = add(path); !error.isEmpty())
         emit problem(tr("Cannot load the palette"), error);
-    return error.isEmpty();
 }
 
 QString PaletteDock::add(const QString& path)

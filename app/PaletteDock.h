@@ -18,13 +18,12 @@ class PaletteDock final : public QDockWidget {
 public:
     explicit PaletteDock(QWidget* parent);
 
-    const std::vector<model::Palette>& palettes() const { return m_palettes; }
     const model::Palette& shown() const { return m_palettes[std::size_t(m_current)]; }
     // The ink as it is now (from the tool bar or a swatch): what "Add ink" adds; a swatch of that
     // colour is marked.
     void setInkColour(const QColor& colour);
-    // Reads a .gpl file and shows it; false, with problem() emitted, when it cannot be read.
-    bool load(const QString& path);
+    // Reads a .gpl file and shows it; problem() says why when it cannot be read.
+    void load(const QString& path);
     // The files loaded before (remembered in the settings) loaded again; a file that can no longer
     // be read is forgotten, and its one-line reason returned.
     QStringList loadRemembered();

@@ -98,7 +98,7 @@ PaletteReadResult readPaletteFile(const QString& path)
     if (!file.open(QIODevice::ReadOnly))
         return {Palette(), json::oneLine(u"%1: cannot open: %2"_s.arg(path, file.errorString()))};
     if (file.size() > limits::maxPaletteBytes)
-        return {Palette(), u"%1: larger than a palette can be (%L2 bytes at most)"_s.arg(path).arg(limits::maxPaletteBytes)};
+        return {Palette(), json::oneLine(u"%1: larger than a palette can be (%L2 bytes at most)"_s.arg(path).arg(limits::maxPaletteBytes))};
     const QByteArray bytes = file.readAll();
     if (file.error() != QFileDevice::NoError)
         return {Palette(), json::oneLine(u"%1: cannot read: %2"_s.arg(path, file.errorString()))};

@@ -226,11 +226,11 @@ sim::Swirl SwirlStroke::map() const
 std::vector<StylusStroke> SwirlStroke::ringStrokes(int k) const
 {
     const double width = radius / rings, ring = (k + 0.5) * width;
+    const double turn = map().angleAt(ring);
     const int count = int(std::ceil(2.0 * std::numbers::pi * (k + 0.5)));  // one a width around the ring
     std::vector<StylusStroke> strokes;
     for (int j = 0; j < count; ++j)
-        strokes.push_back(arcStroke(center, ring, 2.0 * std::numbers::pi * j / count, map().angleAt(ring), width, time,
-                                    duration));
+        strokes.push_back(arcStroke(center, ring, 2.0 * std::numbers::pi * j / count, turn, width, time, duration));
     return strokes;
 }
 

@@ -395,9 +395,21 @@ const Key<Scene> sceneKeys[] = {
      }},
 };
 
+// Whether a tool with a mode (the combs, the swirl) acts in the water.
+bool inWater(const Stroke& stroke)
+{
+    return std::visit(
+        [](const auto& tool) {
+            if constexpr (requires { tool.mode; })
+                return tool.mode == CombStroke::Mode::Water;
+            else
+                return false;
+        },
+        stroke);
+}
+
 // Checks that span several keys, run after every key has been read on its own. `root` is the path
 // of the scene object (the top level of a scene file).
-
 KeyPath itemPath(const KeyPath& root, const QString& list, qsizetype i) { return root.key(list).index(i); }
 
 void checkStrokesFitFlow(const Scene& scene, const KeyPath& root)
@@ -405,14 +417,10 @@ void checkStrokesFitFlow(const Scene& scene, const KeyPath& root)
     if (scene.flow.type != FlowSpec::Type::Analytic)
         return;
     for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
-        const auto* comb = std::get_if<CombStroke>(&scene.strokes[i]);
-        const auto* circular = std::get_if<CircularCombStroke>(&scene.strokes[i]);
-        const auto* swirl = std::get_if<SwirlStroke>(&scene.strokes[i]);
         if (std::holds_alternative<StylusStroke>(scene.strokes[i]))
             itemPath(root, u"strokes"_s, i).key(u"tool"_s).fail(
                 u"a stylus needs \"flow\": {\"type\": \"fluid\"}: an analytic flow is prescribed and does not react to it"_s);
-        if ((comb && comb->mode == CombStroke::Mode::Water) || (circular && circular->mode == CombStroke::Mode::Water) ||
-            (swirl && swirl->mode == CombStroke::Mode::Water))
+        if (inWater(scene.strokes[i]))
             itemPath(root, u"strokes"_s, i).key(u"mode"_s).fail(
                 u"a tool in the water needs \"flow\": {\"type\": \"fluid\"}; use \"mode\": \"exact\" with an analytic flow"_s);
     }

@@ -19,6 +19,8 @@ using json::colorText;
 
 QJsonArray pair(sim::Vec2 p) { return {p.x, p.y}; }
 
+QString modeText(CombStroke::Mode mode) { return mode == CombStroke::Mode::Exact ? u"exact"_s : u"water"_s; }
+
 template <typename T, typename ToJson>
 QJsonArray listJson(const std::vector<T>& items, ToJson toJson)
 {
@@ -116,9 +118,8 @@ QJsonObject toJson(const DropStroke& d)
 template <typename AnyComb>
 void insertActionKeys(QJsonObject& comb, const AnyComb& c)
 {
-    const bool exact = c.mode == CombStroke::Mode::Exact;
-    comb.insert(u"mode"_s, exact ? u"exact"_s : u"water"_s);
-    if (exact) {
+    comb.insert(u"mode"_s, modeText(c.mode));
+    if (c.mode == CombStroke::Mode::Exact) {
         comb.insert(u"sharpness"_s, c.sharpness);
     } else {
         comb.insert(u"duration"_s, c.duration);
@@ -169,9 +170,8 @@ QJsonObject toJson(const SwirlStroke& s)
 {
     QJsonObject swirl{{u"tool"_s, u"swirl"_s}, {u"time"_s, s.time}, {u"center"_s, pair(s.center)},
                       {u"radius"_s, s.radius}, {u"angle"_s, s.angle}};
-    const bool exact = s.mode == CombStroke::Mode::Exact;
-    swirl.insert(u"mode"_s, exact ? u"exact"_s : u"water"_s);
-    if (!exact) {
+    swirl.insert(u"mode"_s, modeText(s.mode));
+    if (s.mode == CombStroke::Mode::Water) {
         swirl.insert(u"duration"_s, s.duration);
         swirl.insert(u"rings"_s, s.rings);
     }
