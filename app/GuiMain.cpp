@@ -44,7 +44,7 @@ int guiMain(int argc, char** argv)
             == QMessageBox::Yes)
         window.recover();
 
-    // The launch benchmark (docs/BENCHMARKS.md, "App launch"): time until the first frame of the simulation is
+    // The launch benchmark (docs/BENCHMARKS.md, "The app"): time until the first frame of the simulation is
     // on screen, then quit.
     if (qEnvironmentVariableIsSet("VF_EXIT_WHEN_READY")) {
         QObject::connect(&window.simulation(), &SimulationController::frameArrived, &app, [&] {

@@ -2,7 +2,7 @@
 // about 200k and 1M vertices at 1280×800, (a) when every displayed frame is a new Frame, as while
 // the simulation plays, and (b) when only repainting; and where a new frame's time goes: the level
 // of detail (decimation), assembling the paths, filling them. A benchmark, run on demand; the
-// figures, the machine and the command are in docs/BENCHMARKS.md ("Canvas (display FPS)").
+// figures, the machine and the command are in docs/BENCHMARKS.md ("The app").
 //
 //   canvas_fps [--seconds S] [--sizes N,N,...]
 //

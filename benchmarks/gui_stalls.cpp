@@ -4,7 +4,7 @@
 // gap is time the event loop spent on something else (painting, taking frames, the document).
 // Each gap is also measured in the GUI thread's own CPU time, which is the work it did (a busy
 // machine also takes the CPU away from it, which shows in wall time only).
-// A benchmark, run on demand; figures and the command in docs/BENCHMARKS.md ("GUI thread stalls").
+// A benchmark, run on demand; figures and the command in docs/BENCHMARKS.md ("The app").
 //
 //   gui_stalls SCENE [--vertices N] [--seconds S]
 //

@@ -7,8 +7,8 @@
 //   FrameGeometry: what a frame's geometry adds to a step, in wall time: a step alone, a step
 //     after the blocking regions() (every field read back), and a step between requestRegions()
 //     and takeRegions(), the worker's way while playing; also request and take back to back.
-// docs/BENCHMARKS.md ("Snapshots", "Frames") has the figures, the machine and the command. A benchmark, run on demand,
-// never a test.
+// docs/BENCHMARKS.md ("Snapshots and frames") has the figures, the machine and the command. A
+// benchmark, run on demand, never a test.
 #include "BenchMain.h"
 #include "BenchScene.h"
 
