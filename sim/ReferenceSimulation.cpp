@@ -12,19 +12,20 @@ namespace vf::sim {
 
 namespace {
 
-std::unique_ptr<Flow> makeFlow(const SimulationSettings& s)
+std::unique_ptr<Flow> makeFlow(const SimulationSettings& s, FluidFlow*& fluid)
 {
     if (s.flow == SimulationSettings::FlowType::Analytic)
         return std::make_unique<AnalyticFlow>(s.u, s.v);
-    return std::make_unique<FluidFlow>(s.fluid);
+    auto made = std::make_unique<FluidFlow>(s.fluid);
+    fluid = made.get();
+    return made;
 }
 
 } // namespace
 
 ReferenceSimulation::ReferenceSimulation(const SimulationSettings& settings)
     : m_settings((validateSettings(settings), settings))
-    , m_flow(makeFlow(settings))
-    , m_fluid(dynamic_cast<FluidFlow*>(m_flow.get()))
+    , m_flow(makeFlow(settings, m_fluid))
     , m_tracker(settings.tracking)
 {
 }

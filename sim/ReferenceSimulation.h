@@ -41,8 +41,8 @@ protected:
 
 private:
     SimulationSettings m_settings;
+    FluidFlow* m_fluid = nullptr;  // m_flow when the flow is a fluid: set while m_flow is made, so declared first
     std::unique_ptr<Flow> m_flow;
-    FluidFlow* m_fluid = nullptr;  // m_flow when the flow is a fluid
     ContourTracker m_tracker;
     std::vector<StylusSegment> m_pendingStylus;
     int m_regionCount = 0;

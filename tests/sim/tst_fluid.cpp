@@ -1,6 +1,6 @@
 // Tests of the fluid solvers. Behaviour, on both solvers as data rows (Fluids.h): projection,
-// walls, viscosity, the pen, degenerate strokes, determinism and snapshots. The reference
-// FluidSolver's own: momentum against pen speed, sampling, settings validation, the largest grid.
+// walls, viscosity, the pen, degenerate strokes, determinism and snapshots, bad input. The
+// reference FluidSolver's own: momentum against pen speed, sampling, the largest grid.
 #include "Fluids.h"
 
 #include <glm/geometric.hpp>
@@ -56,7 +56,8 @@ private slots:
     void deterministicAndSnapshotsReplay();
     void fasterPenGivesMoreMomentum();
     void sampleReproducesLinearField();
-    void badSettingsThrow();
+    void badInputThrows_data() { addBackendRows(); }
+    void badInputThrows();
     void largeGrid();
 };
 
@@ -305,15 +306,17 @@ void TestFluid::sampleReproducesLinearField()
     QVERIFY(std::isfinite(m.sample({nan, nan}).x));
 }
 
-void TestFluid::badSettingsThrow()
+void TestFluid::badInputThrows()
 {
+    QFETCH(QString, backend);
+    VF_REQUIRE_BACKEND(backend);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
-    const auto throwsFor = [](auto change) {
+    const auto throwsFor = [&](auto change) {
         FluidSettings s;
         change(s);
         try {
-            FluidSolver fluid(s);
+            makeFluid(backend, s);
         } catch (const std::invalid_argument& e) {
             return QString(e.what()).startsWith("FluidSettings: ");
         }
@@ -332,14 +335,14 @@ void TestFluid::badSettingsThrow()
     QVERIFY(throwsFor([&](FluidSettings& s) { s.pressureTolerance = 0.0; }));
     QVERIFY(!throwsFor([](FluidSettings& s) { s.nx = 4; s.ny = 4; s.viscosity = 0.0; }));
 
-    FluidSolver fluid(fluidSettings(16, 8, 2.0, 1.0, 0.0));
+    const std::unique_ptr<FluidUnderTest> fluid = makeFluid(backend, fluidSettings(16, 8, 2.0, 1.0, 0.0));
     MacVelocity wrong = FluidSolver(fluidSettings(8, 16, 1.0, 2.0, 0.0)).velocity();
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid.setVelocity(wrong));
-    wrong = fluid.velocity();
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid->setVelocity(wrong));
+    wrong = fluid->velocity();
     wrong.u.pop_back();
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid.setVelocity(wrong));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid.step(0.0));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid.step(nan));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid->setVelocity(wrong));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid->step(0.0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fluid->step(nan));
 }
 
 // 512 x 512, the largest grid the solver is required to handle: one stroke, still divergence-free
