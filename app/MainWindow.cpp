@@ -2,6 +2,7 @@
 // (import, export, tools, modes). Opening and saving are in MainWindowFiles.cpp; the pieces with
 // their own state live apart (Canvas, ExportDialog, RegionsDock, SimulationPanel, Recovery,
 // RecentFiles, ClipboardExport).
+// Past 500 lines because every action's slot is here, each short and each using the window's state.
 #include "app/MainWindow.h"
 
 #include "app/ClipboardExport.h"

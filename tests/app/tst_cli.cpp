@@ -2,6 +2,7 @@
 // through QProcess: exit codes, the one-line error contract, what is (and is not) written, the
 // files read back by an XML parser and by the real readers (qpdf, Ghostscript, pdftoppm), the
 // stats JSON against the geometry, and determinism of the reference backend.
+// One file past 500 lines: every case runs the same binary through the helpers below.
 #include "../TestFiles.h"
 #include "CliRun.h"
 #include "../render/SvgReadBack.h"

@@ -3,6 +3,8 @@
 // same, but while a stroke is drawn). Each test checks the document, the undo stack and the
 // geometry; pixels only for what exists only as pixels (a stroke's trail). Shortcuts are pressed
 // on the window, never triggered, and a key Qt finds ambiguous fails any test.
+// One file past 500 lines: the cases share the window fixture below; docks and dialogs with their
+// own state are tested in files of their own.
 #include "FindChild.h"
 #include "app/ExportDialog.h"
 #include "app/Folders.h"

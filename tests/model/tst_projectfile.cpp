@@ -1,6 +1,7 @@
 // Project files: a written project reads back bit for bit with its states shared as they were, a
 // failed save keeps the old file, the writer refuses what the reader would refuse, and every kind
 // of broken file (made here by corrupting a good one) gives one line naming the problem.
+// One file past 500 lines: each kind of broken file is a case, made by the corrupting helpers below.
 #include "model/EngineSettings.h"
 #include "model/ProjectFile.h"
 #include "model/StateBlob.h"

@@ -1,6 +1,7 @@
 // Export formats end to end: what the files contain, read back by our own parser and by the real
 // readers (xmllint, rsvg-convert, qpdf, pdftoppm, Ghostscript), and atomic replacement on failure.
 // Runs with a QCoreApplication only (QTEST_GUILESS_MAIN): PNG export must not need a GUI.
+// One file past 500 lines: every format's checks share the scenes and the reader helpers below.
 #include "../TestFiles.h"
 #include "SvgReadBack.h"
 #include "TestGeometry.h"
