@@ -5,6 +5,8 @@
 // areas). With y pointing down that is clockwise as seen on screen: right, then down, then left.
 #include "model/Scene.h"
 
+#include "model/SplitMix64.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -233,28 +235,6 @@ std::vector<StylusStroke> SwirlStroke::ringStrokes(int k) const
         strokes.push_back(arcStroke(center, ring, 2.0 * std::numbers::pi * j / count, turn, width, time, duration));
     return strokes;
 }
-
-namespace {
-
-// SplitMix64 (Steele, Lea and Flood 2014): a tiny generator whose every output is fixed by the
-// seed, unlike the standard library's distributions.
-class SplitMix64 {
-public:
-    explicit SplitMix64(std::uint64_t seed) : m_state(seed) {}
-    // Uniform in [0, 1), 53 bits.
-    double unit()
-    {
-        std::uint64_t z = (m_state += 0x9e3779b97f4a7c15ULL);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-    }
-
-private:
-    std::uint64_t m_state;
-};
-
-} // namespace
 
 std::vector<DropStroke> SpatterStroke::drops() const
 {

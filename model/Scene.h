@@ -222,7 +222,30 @@ struct SpatterStroke {
     friend bool operator==(const SpatterStroke&, const SpatterStroke&) = default;
 };
 
-using Stroke = std::variant<StylusStroke, DropStroke, CombStroke, CircularCombStroke, SwirlStroke, SpatterStroke>;
+// A traditional marbling pattern from `time` on, as a sequence of the tools above (model/Patterns.h):
+// stone (drops of `colors` over the whole tray), then for the others lines drawn back and forth
+// across it `spacing` apart (gel-git), and after those a comb across them: tines 2·spacing apart
+// (chevron), tines `fineSpacing` apart (nonpareil), or the nonpareil's comb and a wavy comb drawn
+// back (bouquet). Every pass is exact or in the water, as `mode` says.
+struct PatternStroke {
+    enum class Kind { Stone, GelGit, Chevron, Nonpareil, Bouquet };
+    Kind kind = Kind::Stone;
+    double time = 0.0;
+    CombStroke::Mode mode = CombStroke::Mode::Exact;
+    std::vector<QColor> colors;
+    std::uint64_t seed = 1;
+    double dropRadius = 0.05;   // the stone's drops: radii within a quarter of it
+    double spacing = 0.1;       // the gel-git's lines
+    double fineSpacing = 0.025; // the nonpareil's tines
+    double shift = 0.1;         // exact: how far a pass drags the ink at its tines
+    double sharpness = 0.02;    // exact: u of every pass's map
+    double duration = 0.5;      // water: seconds a pass takes to cross the tray
+
+    friend bool operator==(const PatternStroke&, const PatternStroke&) = default;
+};
+
+using Stroke = std::variant<StylusStroke, DropStroke, CombStroke, CircularCombStroke, SwirlStroke, SpatterStroke,
+                            PatternStroke>;
 
 struct Scene {
     Canvas canvas;

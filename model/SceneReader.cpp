@@ -2,6 +2,7 @@
 // and reported as one line "<file>: <key path or line:col>: <what is wrong>", so the rest of the
 // program only ever sees a valid Scene. About 560 lines: one short reader per section, shape and
 // stroke type of the format, all on the Field helpers of SceneJson.h; a new type adds its reader.
+#include "model/Patterns.h"
 #include "model/SceneFile.h"
 #include "model/SceneJson.h"
 
@@ -309,13 +310,17 @@ void readRadii(const Field& f, SpatterStroke& s)
         f.fail(u"the smallest radius %1 is larger than the largest %2"_s.arg(s.smallest).arg(s.largest));
 }
 
-void readColors(const Field& f, SpatterStroke& s)
+template <typename WithColors>
+void readColors(const Field& f, WithColors& s)
 {
     const QJsonArray list = f.array(1, limits::maxSpatterColors);
     s.colors.clear();
     for (qsizetype i = 0; i < list.size(); ++i)
         s.colors.push_back(color(f.element(list, i)));
 }
+
+// Seeds up to 2^53, which a JSON number holds exactly.
+std::uint64_t seed(const Field& f) { return std::uint64_t(f.integer(0, std::int64_t(1) << 53)); }
 
 const Key<SpatterStroke> spatterKeys[] = {
     {u"tool"_s, true, readAlready<SpatterStroke>},
@@ -324,9 +329,8 @@ const Key<SpatterStroke> spatterKeys[] = {
     {u"spread"_s, false, [](const Field& f, SpatterStroke& s) { s.spread = f.number(0.0, limits::maxCanvasSize); }},
     {u"count"_s, false, [](const Field& f, SpatterStroke& s) { s.count = int(f.integer(1, limits::maxSpatterDrops)); }},
     {u"radius"_s, false, readRadii},
-    {u"colors"_s, true, readColors},
-    // Seeds up to 2^53, which a JSON number holds exactly.
-    {u"seed"_s, false, [](const Field& f, SpatterStroke& s) { s.seed = std::uint64_t(f.integer(0, std::int64_t(1) << 53)); }},
+    {u"colors"_s, true, readColors<SpatterStroke>},
+    {u"seed"_s, false, [](const Field& f, SpatterStroke& s) { s.seed = seed(f); }},
     {u"interval"_s, false, [](const Field& f, SpatterStroke& s) { s.interval = f.nonNegative(); }},
 };
 
@@ -341,9 +345,34 @@ const Key<SwirlStroke> swirlKeys[] = {
     {u"rings"_s, false, [](const Field& f, SwirlStroke& s) { s.rings = int(f.integer(1, limits::maxTines)); }},
 };
 
+PatternStroke::Kind patternKind(const Field& f)
+{
+    using Kind = PatternStroke::Kind;
+    return f.choice<Kind>({{patternName(Kind::Stone), Kind::Stone},
+                           {patternName(Kind::GelGit), Kind::GelGit},
+                           {patternName(Kind::Chevron), Kind::Chevron},
+                           {patternName(Kind::Nonpareil), Kind::Nonpareil},
+                           {patternName(Kind::Bouquet), Kind::Bouquet}});
+}
+
+const Key<PatternStroke> patternKeys[] = {
+    {u"tool"_s, true, readAlready<PatternStroke>},
+    {u"name"_s, true, [](const Field& f, PatternStroke& p) { p.kind = patternKind(f); }},
+    {u"time"_s, true, [](const Field& f, PatternStroke& p) { p.time = seconds(f); }},
+    {u"colors"_s, true, readColors<PatternStroke>},
+    {u"mode"_s, false, [](const Field& f, PatternStroke& p) { p.mode = combMode(f); }},
+    {u"seed"_s, false, [](const Field& f, PatternStroke& p) { p.seed = seed(f); }},
+    {u"drop_radius"_s, false, [](const Field& f, PatternStroke& p) { p.dropRadius = length(f); }},
+    {u"spacing"_s, false, [](const Field& f, PatternStroke& p) { p.spacing = length(f); }},
+    {u"fine_spacing"_s, false, [](const Field& f, PatternStroke& p) { p.fineSpacing = length(f); }},
+    {u"shift"_s, false, [](const Field& f, PatternStroke& p) { p.shift = length(f); }},
+    {u"sharpness"_s, false, [](const Field& f, PatternStroke& p) { p.sharpness = length(f); }},
+    {u"duration"_s, false, [](const Field& f, PatternStroke& p) { p.duration = f.positive(kHuge); }},
+};
+
 Stroke readStroke(const Field& field)
 {
-    enum class Tool { Stylus, Drop, Comb, CircularComb, Swirl, Spatter };
+    enum class Tool { Stylus, Drop, Comb, CircularComb, Swirl, Spatter, Pattern };
     const Field tool = field.member(u"tool"_s);
     if (!tool.exists())
         tool.fail(u"missing (required)"_s);
@@ -352,7 +381,8 @@ Stroke readStroke(const Field& field)
                                {u"comb"_s, Tool::Comb},
                                {u"circular-comb"_s, Tool::CircularComb},
                                {u"swirl"_s, Tool::Swirl},
-                               {u"spatter"_s, Tool::Spatter}})) {
+                               {u"spatter"_s, Tool::Spatter},
+                               {u"pattern"_s, Tool::Pattern}})) {
     case Tool::Stylus:
         return readAs(field, stylusKeys);
     case Tool::Drop:
@@ -364,9 +394,11 @@ Stroke readStroke(const Field& field)
     case Tool::Swirl:
         return readAs(field, swirlKeys);
     case Tool::Spatter:
+        return readAs(field, spatterKeys);
+    case Tool::Pattern:
         break;
     }
-    return readAs(field, spatterKeys);
+    return readAs(field, patternKeys);
 }
 
 // ---- the whole scene --------------------------------------------------------------------------
@@ -486,6 +518,15 @@ void importSvgShapes(Scene& scene, const KeyPath& root, const QString& folder)
     }
 }
 
+// A pattern's drops and tines are counted on the canvas, before any is made.
+void checkPatternsFit(const Scene& scene, const KeyPath& root)
+{
+    for (std::size_t i = 0; i < scene.strokes.size(); ++i)
+        if (const auto* pattern = std::get_if<PatternStroke>(&scene.strokes[i]))
+            if (const auto problem = patternProblem(*pattern, scene.canvas))
+                itemPath(root, u"strokes"_s, i).key(problem->key).fail(problem->message);
+}
+
 // The starting shapes (and the circles drops add) must fit the vertex budget; without this check a
 // tiny max_spacing would make the program try to allocate billions of vertices before any step.
 void checkVertexBudget(const Scene& scene, const KeyPath& root)
@@ -507,6 +548,10 @@ void checkVertexBudget(const Scene& scene, const KeyPath& root)
         if (const auto* spatter = std::get_if<SpatterStroke>(&scene.strokes[i]))
             for (const DropStroke& drop : spatter->drops())
                 add(CircleShape{drop.center, drop.radius}, itemPath(root, u"strokes"_s, i).key(u"count"_s));
+        if (const auto* pattern = std::get_if<PatternStroke>(&scene.strokes[i]))
+            for (const Stroke& tool : patternStrokes(*pattern, scene.canvas))
+                if (const auto* drop = std::get_if<DropStroke>(&tool))
+                    add(CircleShape{drop->center, drop->radius}, itemPath(root, u"strokes"_s, i).key(u"drop_radius"_s));
     }
 }
 
@@ -542,6 +587,7 @@ Scene readSceneObject(const Field& root, const QString& folder)
     importSvgShapes(scene, root.path(), folder);
     checkStrokesFitFlow(scene, root.path());
     checkNamesUnique(scene, root.path());
+    checkPatternsFit(scene, root.path());
     checkVertexBudget(scene, root.path());
     return scene;
 }

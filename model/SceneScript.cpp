@@ -1,5 +1,7 @@
 #include "model/SceneScript.h"
 
+#include "model/Patterns.h"
+
 #include <limits>
 
 #include <QSet>
@@ -15,27 +17,8 @@ SceneScript::SceneScript(const Scene& scene)
             m_looks.push_back({look.name, look.color, look.visible, int(m_looks.size())});
     m_startingRegions = int(m_looks.size());
 
-    for (const Stroke& s : scene.strokes) {
-        if (const auto* drop = std::get_if<DropStroke>(&s)) {
-            m_drops.push_back(*drop);
-        } else if (const auto* stylus = std::get_if<StylusStroke>(&s)) {
-            m_strokes.push_back(*stylus);
-        } else if (const auto* spatter = std::get_if<SpatterStroke>(&s)) {
-            const std::vector<DropStroke> drops = spatter->drops();
-            m_drops.insert(m_drops.end(), drops.begin(), drops.end());
-        } else if (const auto* swirl = std::get_if<SwirlStroke>(&s)) {
-            if (swirl->mode == CombStroke::Mode::Exact)
-                m_maps.push_back({swirl->time, swirl->map()});
-            else
-                for (int k = 0; k < swirl->rings; ++k)
-                    for (StylusStroke& stroke : swirl->ringStrokes(k))
-                        m_strokes.push_back(std::move(stroke));
-        } else if (const auto* comb = std::get_if<CombStroke>(&s)) {
-            addComb(*comb);
-        } else {
-            addComb(std::get<CircularCombStroke>(s));
-        }
-    }
+    for (const Stroke& s : scene.strokes)
+        add(s, scene.canvas);
     std::stable_sort(m_drops.begin(), m_drops.end(), [](const DropStroke& a, const DropStroke& b) { return a.time < b.time; });
 
     QSet<QString> taken;
@@ -56,6 +39,32 @@ SceneScript::SceneScript(const Scene& scene)
         const QString name = m_drops[i].name.isEmpty() ? unusedDropName(int(i) + 1) : m_drops[i].name;
         taken.insert(name);
         m_looks.push_back({name, m_drops[i].color, true, int(m_looks.size())});
+    }
+}
+
+void SceneScript::add(const Stroke& s, const Canvas& canvas)
+{
+    if (const auto* drop = std::get_if<DropStroke>(&s)) {
+        m_drops.push_back(*drop);
+    } else if (const auto* stylus = std::get_if<StylusStroke>(&s)) {
+        m_strokes.push_back(*stylus);
+    } else if (const auto* spatter = std::get_if<SpatterStroke>(&s)) {
+        const std::vector<DropStroke> drops = spatter->drops();
+        m_drops.insert(m_drops.end(), drops.begin(), drops.end());
+    } else if (const auto* pattern = std::get_if<PatternStroke>(&s)) {
+        for (const Stroke& tool : patternStrokes(*pattern, canvas))
+            add(tool, canvas);
+    } else if (const auto* swirl = std::get_if<SwirlStroke>(&s)) {
+        if (swirl->mode == CombStroke::Mode::Exact)
+            m_maps.push_back({swirl->time, swirl->map()});
+        else
+            for (int k = 0; k < swirl->rings; ++k)
+                for (StylusStroke& stroke : swirl->ringStrokes(k))
+                    m_strokes.push_back(std::move(stroke));
+    } else if (const auto* comb = std::get_if<CombStroke>(&s)) {
+        addComb(*comb);
+    } else {
+        addComb(std::get<CircularCombStroke>(s));
     }
 }
 

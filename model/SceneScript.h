@@ -34,6 +34,8 @@ public:
     void applyStylus(sim::Simulation& simulation, double from, double to) const;
 
 private:
+    // One of the scene's tools (a pattern: each of its tools in turn).
+    void add(const Stroke& stroke, const Canvas& canvas);
     // A comb straight or circular: its map when exact, else a stylus stroke per tine.
     template <typename AnyComb>
     void addComb(const AnyComb& comb);

@@ -2,6 +2,7 @@
 // run depends on; doubles go out in Qt's shortest round-trip form, so reading a written scene
 // gives back exactly the same numbers.
 #include "model/AtomicFile.h"
+#include "model/Patterns.h"
 #include "model/SceneFile.h"
 #include "model/SceneJson.h"
 
@@ -164,6 +165,19 @@ QJsonObject toJson(const SpatterStroke& s)
             {u"colors"_s, colors},
             {u"seed"_s, double(s.seed)},
             {u"interval"_s, s.interval}};
+}
+
+QJsonObject toJson(const PatternStroke& p)
+{
+    QJsonArray colors;
+    for (const QColor& c : p.colors)
+        colors.append(colorText(c));
+    return {{u"tool"_s, u"pattern"_s},        {u"name"_s, patternName(p.kind)},
+            {u"time"_s, p.time},              {u"colors"_s, colors},
+            {u"mode"_s, modeText(p.mode)},    {u"seed"_s, double(p.seed)},
+            {u"drop_radius"_s, p.dropRadius}, {u"spacing"_s, p.spacing},
+            {u"fine_spacing"_s, p.fineSpacing}, {u"shift"_s, p.shift},
+            {u"sharpness"_s, p.sharpness},    {u"duration"_s, p.duration}};
 }
 
 QJsonObject toJson(const SwirlStroke& s)

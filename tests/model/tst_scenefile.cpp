@@ -89,6 +89,10 @@ Scene richScene()
     s.strokes.push_back(SwirlStroke{0.6, {0.1, 1.0 / 3.0}, 0.25, -3600.0});
     s.strokes.push_back(SpatterStroke{0.7, {0.4, 0.6}, 1.0 / 3.0, 10'000, 1e-3, 1e-3, {QColor(1, 2, 3), QColor(250, 0, 5, 17)},
                                       (std::uint64_t(1) << 53) - 7, 0.0});
+    s.strokes.push_back(PatternStroke{PatternStroke::Kind::Bouquet, 0.8, CombStroke::Mode::Water,
+                                      {QColor(1, 2, 3), QColor(9, 8, 7, 6)}, 99, 0.1, 0.2, 0.05, 0.3, 0.01, 0.7});
+    s.strokes.push_back(PatternStroke{PatternStroke::Kind::GelGit, 0.9, CombStroke::Mode::Exact, {QColor(4, 5, 6)},
+                                      std::uint64_t(1) << 53, 1.0 / 7.0, 1.0 / 3.0, 1e-3, 0.125, 1e-9, 1e-9});
     return s;
 }
 

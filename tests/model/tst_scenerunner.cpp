@@ -1,5 +1,6 @@
 // SceneRunner: a scene's regions, drops and strokes reach the simulation at the right moments,
 // and the picture it hands out carries the scene's names, colours and visibility.
+#include "model/Patterns.h"
 #include "model/SceneRunner.h"
 
 #include <QSet>
@@ -7,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -128,6 +130,97 @@ private slots:
         SceneRunner runner(scene);
         runner.step(0.3);
         QCOMPARE(runner.simulation().regionCount(), 41);
+    }
+
+    // A pattern is its tools: the stone's drops over the canvas one interval apart, of radii
+    // within a quarter of the pattern's and colours from its list, then each kind's passes in
+    // turn: gel-git's two combs drawing every line `spacing` apart once, alternately forth and back.
+    void patternIsItsTools()
+    {
+        const Canvas canvas{1.5, 1.0, Qt::white};
+        PatternStroke pattern{PatternStroke::Kind::Stone, 0.25, CombStroke::Mode::Exact, {Qt::red, Qt::blue}, 5};
+        const std::vector<Stroke> stone = patternStrokes(pattern, canvas);
+        const std::size_t drops = std::size_t(std::ceil(1.5 / (std::numbers::pi * 0.05 * 0.05)));
+        QCOMPARE(stone.size(), drops);
+        QSet<QRgb> colours;
+        for (std::size_t i = 0; i < drops; ++i) {
+            const auto& drop = std::get<DropStroke>(stone[i]);
+            QVERIFY(drop.center.x >= 0.0 && drop.center.x <= 1.5 && drop.center.y >= 0.0 && drop.center.y <= 1.0);
+            QVERIFY(drop.radius >= 0.0375 && drop.radius <= 0.0625);
+            QCOMPARE(drop.time, 0.25 + dropInterval * double(i));
+            colours.insert(drop.color.rgb());
+        }
+        QCOMPARE(colours.size(), 2);
+
+        const std::pair<PatternStroke::Kind, std::size_t> passes[] = {{PatternStroke::Kind::GelGit, 2},
+                                                                      {PatternStroke::Kind::Chevron, 3},
+                                                                      {PatternStroke::Kind::Nonpareil, 3},
+                                                                      {PatternStroke::Kind::Bouquet, 4}};
+        for (const auto& [kind, count] : passes) {
+            pattern.kind = kind;
+            const std::vector<Stroke> tools = patternStrokes(pattern, canvas);
+            QCOMPARE(tools.size(), drops + count);
+            QVERIFY(std::equal(stone.begin(), stone.end(), tools.begin()));  // the same stone under every pattern
+            double time = std::get<DropStroke>(tools[drops - 1]).time;
+            for (std::size_t k = drops; k < tools.size(); ++k) {
+                const auto& comb = std::get<CombStroke>(tools[k]);
+                QVERIFY(comb.time > time);
+                time = comb.time;
+            }
+        }
+
+        // Gel-git: lines at s/2, 3s/2, ... across the whole height, even ones forth, odd ones back.
+        pattern.kind = PatternStroke::Kind::GelGit;
+        const std::vector<Stroke> gelGit = patternStrokes(pattern, canvas);
+        std::vector<std::pair<double, double>> lines;  // y, direction along x
+        for (std::size_t k = drops; k < gelGit.size(); ++k) {
+            const auto& comb = std::get<CombStroke>(gelGit[k]);
+            QCOMPARE(comb.from.y, comb.to.y);
+            QVERIFY(std::abs(glm::distance(comb.from, comb.to) - pattern.shift) < 1e-15);
+            for (int t = 0; t < comb.tines; ++t)
+                lines.emplace_back(comb.from.y + (t - (comb.tines - 1) / 2.0) * comb.spacing, comb.to.x - comb.from.x);
+        }
+        std::sort(lines.begin(), lines.end());
+        QCOMPARE(lines.size(), std::size_t(10));
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            QVERIFY(std::abs(lines[i].first - (0.05 + 0.1 * double(i))) < 1e-12);
+            QCOMPARE(lines[i].second > 0.0, i % 2 == 0);
+        }
+    }
+
+    // An exact pattern's passes move the ink and keep every region's area (area correction off).
+    void exactPatternKeepsAreas()
+    {
+        Scene scene = stillScene();
+        scene.regions.clear();
+        scene.time.dt = 0.001;
+        scene.tracking.areaCorrection = false;
+        scene.strokes = {PatternStroke{PatternStroke::Kind::Chevron, 0.0, CombStroke::Mode::Exact,
+                                       {Qt::red, Qt::blue, Qt::green}, 11, 0.15}};
+        const std::size_t drops = std::size_t(std::ceil(1.0 / (std::numbers::pi * 0.15 * 0.15)));
+        SceneRunner runner(scene);
+        while (runner.simulation().time() < dropInterval * double(drops) - 0.0005)
+            runner.step(scene.time.dt);
+        QCOMPARE(runner.simulation().regionCount(), int(drops));
+        const auto before = runner.simulation().regions();
+        for (int k = 0; k < 10; ++k)
+            runner.step(scene.time.dt);
+        const auto after = runner.simulation().regions();
+        double moved = 0.0, worst = 0.0;
+        for (std::size_t r = 0; r < drops; ++r) {
+            const auto area = [](const std::vector<sim::Polygon>& contours) {
+                double sum = 0.0;
+                for (const sim::Polygon& c : contours)
+                    sum += sim::signedArea(c);
+                return sum;
+            };
+            worst = std::max(worst, std::abs(area(after[r]) - area(before[r])) / area(before[r]));
+            moved = std::max(moved, sim::hausdorffDistance(before[r][0], after[r][0]));
+        }
+        // Each pass is depicted within the chord tolerance, and short edges are collapsed after it:
+        // three passes over drops already squeezed by later ones keep every area within 4.4e-5.
+        QVERIFY2(worst < 1e-4, qPrintable(QString::number(worst)));
+        QVERIFY2(moved > 0.05, qPrintable(QString::number(moved)));
     }
 
     // A circular comb's tines in the water trace their arcs about the centre from the ray toward +x.
