@@ -8,6 +8,7 @@
 #include "app/ClipboardExport.h"
 #include "app/ExportDialog.h"
 #include "app/PaletteDock.h"
+#include "app/PatternDialog.h"
 #include "app/RecentFiles.h"
 #include "app/Recovery.h"
 #include "app/SimulationPanel.h"
@@ -185,6 +186,10 @@ void MainWindow::createTools()
         tools->addAction(a);
         toolMenu->addAction(a);
     }
+    toolMenu->addSeparator();
+    QAction* pattern = toolMenu->addAction(tr("P&attern…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), this,
+                                           &MainWindow::choosePattern);
+    pattern->setObjectName(QStringLiteral("pattern"));
     findChild<QAction*>(QStringLiteral("toolDrop"))->setChecked(true);
     m_canvas->setTool(Tool::Drop);
 
@@ -405,6 +410,28 @@ model::Drawing MainWindow::drawing() const
 }
 
 // ---- Import and export --------------------------------------------------------------------------------
+
+// A pattern in the inks of the palette shown, made at once as one step of the history.
+void MainWindow::choosePattern()
+{
+    if (!m_document.canAddRegions()) {
+        m_report(tr("Cannot make a pattern yet"), tr("The scene's own drops are still landing; play on and try again."));
+        return;
+    }
+    m_pattern.colors.clear();
+    for (const model::PaletteColour& c : m_paletteDock->shown().colours)
+        m_pattern.colors.push_back(c.colour);
+    if (m_pattern.colors.empty()) {
+        m_report(tr("Cannot make a pattern"), tr("The palette shown has no inks; add one first."));
+        return;
+    }
+    PatternDialog dialog(m_pattern, m_document.scene().canvas, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    m_pattern = dialog.pattern();
+    m_document.applyPattern(m_pattern);
+    ++m_pattern.seed;  // the next one's drops fall elsewhere
+}
 
 void MainWindow::chooseImport()
 {

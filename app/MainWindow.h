@@ -91,6 +91,7 @@ private:
     void exportPicture();
     void copySvg();
     void chooseImport();
+    void choosePattern();
     std::vector<sim::Polygon> textOutlines(const QString& text, QPointF baselineStart) const;
     void previewText();
     void updateTitle();
@@ -106,6 +107,7 @@ private:
     SimulationPanel* m_panel = nullptr;
     PaletteDock* m_paletteDock = nullptr;
     TextToolBar* m_textOptions = nullptr;
+    model::PatternStroke m_pattern;  // the last one made (Tools ▸ Pattern… starts from it)
     Recovery* m_recovery = nullptr;
     RecentFiles* m_recentFiles = nullptr;
     QAction* m_playAction = nullptr;

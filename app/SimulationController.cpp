@@ -80,6 +80,11 @@ void SimulationController::drop(sim::Vec2 center, double radius)
     post([center, radius](SimulationWorker& w) { w.drop(center, radius); });
 }
 
+void SimulationController::applyMap(const sim::ExactMap& map)
+{
+    post([map](SimulationWorker& w) { w.applyMap(map); });
+}
+
 void SimulationController::stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
 {
     post([=](SimulationWorker& w) { w.stylus(from, to, radius, seconds); });

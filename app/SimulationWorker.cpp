@@ -161,6 +161,12 @@ void SimulationWorker::drop(sim::Vec2 center, double radius)
         stopWith(tr("vertex limit reached (%1 vertices)").arg(m_simulation->vertexCount()));
 }
 
+void SimulationWorker::applyMap(const sim::ExactMap& map)
+{
+    if (m_simulation && !m_simulation->applyMap(map))
+        stopWith(tr("vertex limit reached (%1 vertices)").arg(m_simulation->vertexCount()));
+}
+
 void SimulationWorker::stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
 {
     if (!m_simulation)

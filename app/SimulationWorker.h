@@ -37,6 +37,7 @@ public:
     void addRegion(const std::vector<sim::Polygon>& contours);
     void removeRegion(int region);
     void drop(sim::Vec2 center, double radius);
+    void applyMap(const sim::ExactMap& map);
     // The pen's motion is fed to the simulation over the steps its duration covers, one step's
     // worth a step: handed over whole, a pointer event's 20 ms would push during one step of 5 ms
     // and leave the water idle for three, and a viscous fluid would barely follow the pen.

@@ -3,6 +3,8 @@
 // records; its sections below are the seams to split along should one part grow.
 #include "model/Document.h"
 
+#include "model/Patterns.h"
+
 #include <QSet>
 
 #include <algorithm>
@@ -358,6 +360,26 @@ void Document::drop(sim::Vec2 center, double radius, const QColor& color)
         m_port.drop(center, radius);
         RegionTable regions = m_regions;
         regions.push_back({unusedName(tr("drop")), color, true, int(m_regions.size())});
+        replaceRegions(regions);
+    });
+}
+
+void Document::applyPattern(const PatternStroke& pattern)
+{
+    if (!canAddRegions() || pattern.colors.empty() || patternProblem(pattern, m_scene.canvas))
+        return;
+    PatternStroke exact = pattern;
+    exact.mode = CombStroke::Mode::Exact;
+    pushSimulationCommand(tr("Pattern: %1").arg(patternName(pattern.kind)), [&] {
+        RegionTable regions = m_regions;
+        for (const Stroke& tool : patternStrokes(exact, m_scene.canvas)) {
+            if (const auto* drop = std::get_if<DropStroke>(&tool)) {
+                m_port.drop(drop->center, drop->radius);
+                regions.push_back({unusedNameIn(regions, tr("drop")), drop->color, true, int(regions.size())});
+            } else {
+                m_port.applyMap(std::get<CombStroke>(tool).map());
+            }
+        }
         replaceRegions(regions);
     });
 }

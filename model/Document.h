@@ -78,6 +78,9 @@ public:
 
     // ---- Actions: each is one undoable command. ---------------------------------------------
     void drop(sim::Vec2 center, double radius, const QColor& color);
+    // A pattern's drops and passes as one command, its passes exact whatever its mode says: all of
+    // it acts at once (model/Patterns.h).
+    void applyPattern(const PatternStroke& pattern);
     void beginStroke();
     void stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
     void addRegions(const QString& commandText, const std::vector<NewRegion>& regions);

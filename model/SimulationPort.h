@@ -30,6 +30,8 @@ public:
     // (model::withoutRegion).
     virtual void removeRegion(int region) = 0;
     virtual void drop(sim::Vec2 center, double radius) = 0;
+    // A tool's exact map (a comb's, a swirl's) applied to all the ink at once.
+    virtual void applyMap(const sim::ExactMap& map) = 0;
     // The pen moved from `from` to `to` in `seconds` of wall time; it acts during the next step.
     virtual void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds) = 0;
 

@@ -11,6 +11,9 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <cmath>
+#include <numbers>
+
 using namespace vf;
 using namespace vf::model;
 
@@ -23,7 +26,7 @@ public:
     sim::SimulationState state;
     EngineSettings configured;
     std::size_t verticesPerRegion = 3;
-    int loads = 0;
+    int loads = 0, maps = 0;
     std::uint64_t requests = 0;
 
     void load(const Scene& scene, const EngineSettings& settings, const StateSlotPtr& start) override
@@ -53,6 +56,7 @@ public:
     void addRegion(const std::vector<sim::Polygon>&) override { ++requests, addContour(); }
     void removeRegion(int region) override { ++requests, state = withoutRegion(state, region); }
     void drop(sim::Vec2, double) override { ++requests, addContour(); }
+    void applyMap(const sim::ExactMap&) override { ++requests, ++maps; }
     void stylus(sim::Vec2, sim::Vec2, double, double seconds) override { ++requests, state.time += seconds; }
     std::uint64_t requestCount() const override { return requests; }
 
@@ -123,6 +127,38 @@ private slots:
         QCOMPARE(names(doc.regions()), QStringList({"r0", "drop"}));
         doc.undoStack().undo();
         QVERIFY(port.state == start);
+    }
+
+    // A pattern is one command: its drops become regions named and coloured as drops are, its
+    // passes maps; one undo takes all of it back. A pattern the canvas cannot hold does nothing.
+    void patternIsOneCommand()
+    {
+        FakePort port;
+        Document doc(port);
+        doc.openScene(sceneWithRegions(1), QStringLiteral("reference"));
+        const sim::SimulationState start = port.state;
+        PatternStroke pattern{PatternStroke::Kind::Chevron, 0.0, CombStroke::Mode::Water, {Qt::red, Qt::blue}, 4, 0.2};
+        doc.applyPattern(pattern);
+        QCOMPARE(doc.undoStack().count(), 1);
+        QCOMPARE(doc.undoStack().text(0), QStringLiteral("Pattern: chevron"));
+        const int drops = int(std::ceil(1.0 / (std::numbers::pi * 0.04)));
+        QCOMPARE(int(doc.regions().size()), 1 + drops);
+        QCOMPARE(port.state.regionCount, 1 + drops);
+        QCOMPARE(port.maps, 3);
+        QCOMPARE(doc.regions()[1].name, QStringLiteral("drop"));
+        QCOMPARE(doc.regions().back().simIndex, drops);
+        for (std::size_t r = 1; r < doc.regions().size(); ++r)
+            QVERIFY(doc.regions()[r].color == QColor(Qt::red) || doc.regions()[r].color == QColor(Qt::blue));
+
+        doc.undoStack().undo();
+        QVERIFY(port.state == start);
+        QCOMPARE(names(doc.regions()), QStringList({"r0"}));
+        doc.undoStack().redo();
+        QCOMPARE(int(doc.regions().size()), 1 + drops);
+
+        pattern.dropRadius = 1e-3;  // over 300,000 drops
+        doc.applyPattern(pattern);
+        QCOMPARE(doc.undoStack().count(), 1);
     }
 
     void aCommandEndsWhereTheNextStarts()

@@ -1,0 +1,162 @@
+// Tools ▸ Pattern… in the main window, by keys: the dialog says how many drops the pattern makes
+// on this canvas, OK makes it as one step of the history in the inks of the palette shown, and the
+// undo and redo keys take it back and bring it again; a pattern the canvas cannot hold is refused
+// in the dialog.
+#include "FindChild.h"
+#include "app/MainWindow.h"
+#include "app/PatternDialog.h"
+#include "app/SimulationController.h"
+#include "model/Palette.h"
+#include "model/SceneFile.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace vf;
+using namespace vf::app;
+
+namespace {
+
+model::Scene stillScene()
+{
+    model::Scene scene;
+    scene.flow.type = model::FlowSpec::Type::Analytic;
+    scene.flow.u = scene.flow.v = QStringLiteral("0");
+    scene.tracking.maxSpacing = 0.01;
+    scene.regions.push_back({QStringLiteral("ink"), QColor(0x1d, 0x35, 0x57), true, model::CircleShape{{0.5, 0.5}, 0.2}});
+    return scene;
+}
+
+// Types `text` into the spin box as a user does: select what is there, type over it.
+void typeInto(QDoubleSpinBox* box, const QString& text)
+{
+    box->setFocus();
+    QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(box, text);
+}
+
+std::size_t simulatedRegions(MainWindow& w)
+{
+    w.simulation().sync();
+    return w.simulation().frame()->regions.size();
+}
+
+} // namespace
+
+class TestPatternDialog : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("vectorfluid-tests"));
+        QCoreApplication::setApplicationName(QStringLiteral("tst_patterndialog"));
+        QSettings().clear();
+        QSettings().setValue(QStringLiteral("simulation/backend"), QStringLiteral("reference"));
+        QVERIFY(m_dir.isValid());
+        qputenv("VF_RECOVERY_DIR", m_dir.filePath(QStringLiteral("recovery")).toUtf8());
+        m_scenePath = m_dir.filePath(QStringLiteral("still.vfscene"));
+        QCOMPARE(model::writeSceneFile(stillScene(), m_scenePath), QString());
+    }
+
+    void init()
+    {
+        QTest::failOnWarning(QRegularExpression(QStringLiteral("Ambiguous shortcut")));
+        m_window = std::make_unique<MainWindow>();
+        m_window->setReport([this](const QString&, const QString& text) { m_reports << text; });
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->activateWindow();  // shortcuts reach the active window only
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        QVERIFY(m_window->openFile(m_scenePath));
+        m_window->simulation().setPlaying(false);
+        m_reports.clear();
+    }
+
+    void cleanup()
+    {
+        m_window->document().undoStack().setClean();  // no prompt on close
+        m_window.reset();
+    }
+
+    void patternIsOneStepInThePalettesInks()
+    {
+        MainWindow& w = *m_window;
+        QString summary;
+        test::whenModal<PatternDialog>([&summary](PatternDialog* dialog) {
+            auto* kind = test::child<QComboBox>(*dialog, "patternKind");
+            kind->setFocus();
+            QTest::keyClick(kind, Qt::Key_Down);
+            QTest::keyClick(kind, Qt::Key_Down);
+            typeInto(test::child<QDoubleSpinBox>(*dialog, "patternDropRadius"), QStringLiteral("0.2"));
+            summary = test::child<QLabel>(*dialog, "patternSummary")->text();
+            QTest::keyClick(dialog, Qt::Key_Return);
+        });
+        QTest::keyClick(&w, Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
+
+        const int drops = int(std::ceil(1.0 / (std::numbers::pi * 0.2 * 0.2)));
+        QCOMPARE(summary, QStringLiteral("Drops: %1, in %2 inks; then comb passes: 3. One step of the history.")
+                              .arg(drops)
+                              .arg(model::builtInPalettes()[0].colours.size()));
+        QUndoStack& history = w.document().undoStack();
+        QCOMPARE(history.count(), 1);
+        QCOMPARE(history.text(0), QStringLiteral("Pattern: chevron"));
+        QCOMPARE(int(w.document().regions().size()), 1 + drops);
+        QCOMPARE(simulatedRegions(w), std::size_t(1 + drops));
+        const model::Palette& inks = model::builtInPalettes()[0];
+        for (std::size_t r = 1; r < w.document().regions().size(); ++r) {
+            const QColor c = w.document().regions()[r].color;
+            QVERIFY(std::any_of(inks.colours.begin(), inks.colours.end(),
+                                [&c](const model::PaletteColour& ink) { return ink.colour == c; }));
+        }
+
+        w.activateWindow();  // as a window manager does when the dialog closes (offscreen has none)
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(int(w.document().regions().size()), 1);
+        QCOMPARE(simulatedRegions(w), std::size_t(1));
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(int(w.document().regions().size()), 1 + drops);
+        QCOMPARE(simulatedRegions(w), std::size_t(1 + drops));
+    }
+
+    void patternTheCanvasCannotHoldIsRefusedInTheDialog()
+    {
+        MainWindow& w = *m_window;
+        QString summary;
+        bool okEnabled = true;
+        test::whenModal<PatternDialog>([&](PatternDialog* dialog) {
+            typeInto(test::child<QDoubleSpinBox>(*dialog, "patternDropRadius"), QStringLiteral("0.005"));
+            summary = test::child<QLabel>(*dialog, "patternSummary")->text();
+            okEnabled = dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->isEnabled();
+            QTest::keyClick(dialog, Qt::Key_Return);  // does nothing: OK is disabled
+            QTest::keyClick(dialog, Qt::Key_Escape);
+        });
+        QTest::keyClick(&w, Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
+        QVERIFY(!okEnabled);
+        QVERIFY2(summary.contains(QStringLiteral("more than 10000")), qPrintable(summary));
+        QCOMPARE(w.document().undoStack().count(), 0);
+        QCOMPARE(int(w.document().regions().size()), 1);
+    }
+
+private:
+    QTemporaryDir m_dir;
+    QString m_scenePath;
+    std::unique_ptr<MainWindow> m_window;
+    QStringList m_reports;
+};
+
+QTEST_MAIN(TestPatternDialog)
+#include "tst_patterndialog.moc"
