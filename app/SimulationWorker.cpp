@@ -81,7 +81,7 @@ void SimulationWorker::load(const model::Scene& scene, const model::EngineSettin
         for (const model::RegionSpec& r : scene.regions)
             for (const model::StartingRegion& start : model::startingRegions(r, settings.tracking.maxSpacing))
                 m_simulation->addRegion(start.contours);
-        m_script->applyDrops(*m_simulation, -INFINITY, 0.0);
+        m_script->applyTools(*m_simulation, -INFINITY, 0.0);  // those at t = 0 make the starting picture
         if (settings.backend != reference.backend) {
             const sim::SimulationState picture = m_simulation->snapshot();
             build(settings, &picture);
@@ -240,7 +240,7 @@ void SimulationWorker::step()
     const double dt = m_scene.time.dt;
     const double t = m_simulation->time();
     try {
-        bool limit = m_script->applyDrops(*m_simulation, t, t + dt);
+        bool limit = m_script->applyTools(*m_simulation, t, t + dt);
         m_script->applyStylus(*m_simulation, t, t + dt);
         feedPen();
         limit = m_simulation->step(dt).vertexLimitReached || limit;

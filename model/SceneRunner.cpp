@@ -35,8 +35,7 @@ SceneRunner::SceneRunner(Scene scene, const SimulationFactory& factory)
         for (const StartingRegion& start : startingRegions(r, m_scene.tracking.maxSpacing))
             m_simulation->addRegion(start.contours);
     // Drops and exact maps at t = 0 are part of the starting picture.
-    m_vertexLimitReached = m_script.applyDrops(*m_simulation, -INFINITY, 0.0);
-    m_vertexLimitReached = m_script.applyMaps(*m_simulation, -INFINITY, 0.0) || m_vertexLimitReached;
+    m_vertexLimitReached = m_script.applyTools(*m_simulation, -INFINITY, 0.0);
 }
 
 sim::StepReport SceneRunner::step(double dt)
@@ -45,8 +44,7 @@ sim::StepReport SceneRunner::step(double dt)
     // land a few ulps off, which could let a drop fall between two steps' windows.
     const double t = m_clock;
     m_clock += dt;
-    m_vertexLimitReached = m_script.applyDrops(*m_simulation, t, m_clock) || m_vertexLimitReached;
-    m_vertexLimitReached = m_script.applyMaps(*m_simulation, t, m_clock) || m_vertexLimitReached;
+    m_vertexLimitReached = m_script.applyTools(*m_simulation, t, m_clock) || m_vertexLimitReached;
     m_script.applyStylus(*m_simulation, t, m_clock);
     sim::StepReport report = m_simulation->step(dt);
     report.vertexLimitReached = report.vertexLimitReached || m_vertexLimitReached;

@@ -73,6 +73,12 @@ double SceneScript::lastDropTime() const
     return m_drops.empty() ? -std::numeric_limits<double>::infinity() : m_drops.back().time;
 }
 
+bool SceneScript::applyTools(sim::Simulation& simulation, double from, double to) const
+{
+    const bool dropsReachedLimit = applyDrops(simulation, from, to);
+    return applyMaps(simulation, from, to) || dropsReachedLimit;
+}
+
 bool SceneScript::applyDrops(sim::Simulation& simulation, double from, double to) const
 {
     bool limitReached = false;

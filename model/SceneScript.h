@@ -22,18 +22,17 @@ public:
     // When the last drop lands (seconds of simulated time); -infinity without drops.
     double lastDropTime() const;
 
-    // Lands the drops due in (from, to], in order; returns whether one took the vertex count to
-    // tracking.max_vertices.
-    bool applyDrops(sim::Simulation& simulation, double from, double to) const;
-    // Applies the exact maps (combs, circular combs, swirls) due in (from, to], in file order;
-    // returns whether one took the vertex count to tracking.max_vertices. (A comb in the water is
-    // a stylus stroke per tine.)
-    bool applyMaps(sim::Simulation& simulation, double from, double to) const;
+    // The tools due in (from, to], as a step takes them: the drops in landing order, then the exact
+    // maps (combs, circular combs, swirls) in file order (a tool in the water is stylus strokes).
+    // Returns whether one took the vertex count to tracking.max_vertices.
+    bool applyTools(sim::Simulation& simulation, double from, double to) const;
     // The stylus strokes' share of (from, to]: every piece of a pen path overlapping the interval
     // acts with the part of it inside the interval.
     void applyStylus(sim::Simulation& simulation, double from, double to) const;
 
 private:
+    bool applyDrops(sim::Simulation& simulation, double from, double to) const;
+    bool applyMaps(sim::Simulation& simulation, double from, double to) const;
     // One of the scene's tools (a pattern: each of its tools in turn).
     void add(const Stroke& stroke, const Canvas& canvas);
     // A comb straight or circular: its map when exact, else a stylus stroke per tine.
