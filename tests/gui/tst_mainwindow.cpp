@@ -6,6 +6,7 @@
 // One file past 500 lines: the cases share the window fixture below; docks and dialogs with their
 // own state are tested in files of their own.
 #include "FindChild.h"
+#include "WindowTest.h"
 #include "app/ExportDialog.h"
 #include "app/Folders.h"
 #include "app/MainWindow.h"
@@ -95,13 +96,8 @@ class TestMainWindow : public QObject {
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName(QStringLiteral("vectorfluid-tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("tst_mainwindow"));
-        QSettings().clear();
-        QSettings().setValue(QStringLiteral("simulation/backend"), QStringLiteral("reference"));
         QVERIFY(m_dir.isValid());
-        qputenv("VF_RECOVERY_DIR", m_dir.filePath(QStringLiteral("recovery")).toUtf8());
+        test::useTestSettings("tst_mainwindow", m_dir);
         m_scenePath = m_dir.filePath(QStringLiteral("small.vfscene"));
         QCOMPARE(model::writeSceneFile(smallScene(), m_scenePath), QString());
     }
@@ -116,10 +112,7 @@ private slots:
             return m_answer;
         });
         m_window->setReport([this](const QString&, const QString& text) { m_reports << text; });
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();  // shortcuts reach the active window only
-        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        QVERIFY(test::showActive(*m_window));
         QVERIFY(m_window->openFile(m_scenePath));
         m_window->simulation().setPlaying(false);
         geometry(*m_window);

@@ -4,6 +4,7 @@
 // cannot hold is refused in the dialog. A scene's own exact tools act in the app as they do in
 // `vectorfluid render`.
 #include "FindChild.h"
+#include "WindowTest.h"
 #include "app/MainWindow.h"
 #include "app/PatternDialog.h"
 #include "app/SimulationController.h"
@@ -63,13 +64,8 @@ class TestMarblingTools : public QObject {
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName(QStringLiteral("vectorfluid-tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("tst_marblingtools"));
-        QSettings().clear();
-        QSettings().setValue(QStringLiteral("simulation/backend"), QStringLiteral("reference"));
         QVERIFY(m_dir.isValid());
-        qputenv("VF_RECOVERY_DIR", m_dir.filePath(QStringLiteral("recovery")).toUtf8());
+        test::useTestSettings("tst_marblingtools", m_dir);
         m_scenePath = m_dir.filePath(QStringLiteral("still.vfscene"));
         QCOMPARE(model::writeSceneFile(stillScene(), m_scenePath), QString());
     }
@@ -79,10 +75,7 @@ private slots:
         QTest::failOnWarning(QRegularExpression(QStringLiteral("Ambiguous shortcut")));
         m_window = std::make_unique<MainWindow>();
         m_window->setReport([this](const QString&, const QString& text) { m_reports << text; });
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();  // shortcuts reach the active window only
-        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        QVERIFY(test::showActive(*m_window));
         QVERIFY(m_window->openFile(m_scenePath));
         m_window->simulation().setPlaying(false);
         m_reports.clear();

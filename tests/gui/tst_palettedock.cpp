@@ -3,6 +3,7 @@
 // shows a palette written by Inkscape's rules and brings it back at the next start (or says why it
 // cannot); a broken file is refused in one line, the palettes as they were.
 #include "FindChild.h"
+#include "WindowTest.h"
 #include "app/MainWindow.h"
 #include "model/Palette.h"
 
@@ -51,13 +52,8 @@ class TestPaletteDock : public QObject {
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName(QStringLiteral("vectorfluid-tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("tst_palettedock"));
-        QSettings().clear();
-        QSettings().setValue(QStringLiteral("simulation/backend"), QStringLiteral("reference"));
         QVERIFY(m_dir.isValid());
-        qputenv("VF_RECOVERY_DIR", m_dir.filePath(QStringLiteral("recovery")).toUtf8());
+        test::useTestSettings("tst_palettedock", m_dir);
     }
 
     void init()
