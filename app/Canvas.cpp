@@ -32,7 +32,8 @@ constexpr double kButtonStepFactor = 1.414; // zoomIn/zoomOut: two steps double 
 // large that device coordinates leave the range the raster engine handles exactly.
 constexpr double kMinPixelsAcross = 16.0;
 constexpr double kMaxPixelsAcross = 1e6;
-constexpr std::size_t kMaxVertexDots = 20000;  // more dots than this merge into the contour line
+constexpr std::size_t kMaxVertexDots = 20000;
+constexpr double kClickSpatterSpread = 0.15;  // of the canvas width, for a click of the Spatter tool  // more dots than this merge into the contour line
 constexpr double kPointsPerInch = 72.0;
 constexpr qint64 kFpsWindowMs = 1000;
 
@@ -522,6 +523,7 @@ void Canvas::mousePressEvent(QMouseEvent* event)
         emit regionClicked(regionAt(at));
         break;
     case Tool::Drop:
+    case Tool::Spatter:
         m_drag = Drag::Drop;
         m_dropCenter = at;
         m_dropPreview = 0.0;
@@ -591,11 +593,14 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
         return;
     case Drag::Drop: {
         const bool dragged = length(pos - m_pressPos) >= QApplication::startDragDistance();
-        const double radius = dragged ? length(mapToCanvas(pos) - m_dropCenter)
-                                      : m_clickDropRadius * canvasSize().width();
+        const double clicked = (m_tool == Tool::Spatter ? kClickSpatterSpread : m_clickDropRadius) * canvasSize().width();
+        const double radius = dragged ? length(mapToCanvas(pos) - m_dropCenter) : clicked;
         m_dropPreview = 0.0;
         update();
-        emit dropRequested(m_dropCenter, radius);
+        if (m_tool == Tool::Spatter)
+            emit spatterRequested(m_dropCenter, radius);
+        else
+            emit dropRequested(m_dropCenter, radius);
         return;
     }
     case Drag::Stroke: {

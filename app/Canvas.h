@@ -25,7 +25,7 @@ class QNativeGestureEvent;
 
 namespace vf::app {
 
-enum class Tool { Select, Drop, Stylus, Text, Pan };
+enum class Tool { Select, Drop, Spatter, Stylus, Text, Pan };
 
 class Canvas : public QWidget {
     Q_OBJECT
@@ -77,6 +77,8 @@ public slots:
 
 signals:
     void dropRequested(QPointF center, double radius);
+    // The Spatter tool: drops within `spread` of `center` (dragged out as a drop's radius is).
+    void spatterRequested(QPointF center, double spread);
     void strokeStarted(QPointF at);
     // `seconds`: between the two pointer events, so distance / seconds is the pen's speed.
     void strokeMoved(QPointF from, QPointF to, double seconds);

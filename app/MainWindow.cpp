@@ -171,6 +171,7 @@ void MainWindow::createTools()
     } toolList[] = {
         {tr("Se&lect"), QKeySequence(Qt::Key_V), Tool::Select, "toolSelect"},
         {tr("&Drop"), QKeySequence(Qt::Key_D), Tool::Drop, "toolDrop"},
+        {tr("Spatte&r"), QKeySequence(Qt::Key_B), Tool::Spatter, "toolSpatter"},
         {tr("&Stylus"), QKeySequence(Qt::Key_S), Tool::Stylus, "toolStylus"},
         {tr("&Text"), QKeySequence(Qt::Key_T), Tool::Text, "toolText"},
         {tr("&Pan"), QKeySequence(Qt::Key_H), Tool::Pan, "toolPan"},
@@ -374,6 +375,7 @@ void MainWindow::connectDocument()
         }
         m_document.drop(toVec(center), radius, m_inkColor);
     });
+    connect(m_canvas, &Canvas::spatterRequested, this, &MainWindow::spatter);
     connect(m_canvas, &Canvas::strokeStarted, this, [this] {
         m_document.beginStroke();
         m_simulation.setStroking(true);
@@ -410,6 +412,29 @@ model::Drawing MainWindow::drawing() const
 }
 
 // ---- Import and export --------------------------------------------------------------------------------
+
+// Twenty drops within `spread` of `center`, in the inks of the palette shown, each spatter's from a
+// seed of its own.
+void MainWindow::spatter(QPointF center, double spread)
+{
+    if (!m_document.canAddRegions()) {
+        statusBar()->showMessage(tr("The scene's own drops are still landing; play on and spatter again"), 5000);
+        return;
+    }
+    model::SpatterStroke brush;
+    brush.center = toVec(center);
+    brush.spread = spread;
+    brush.smallest = 0.005 * m_document.scene().canvas.width;
+    brush.largest = 0.02 * m_document.scene().canvas.width;
+    brush.seed = m_spatterSeed++;
+    for (const model::PaletteColour& c : m_paletteDock->shown().colours)
+        brush.colors.push_back(c.colour);
+    if (brush.colors.empty()) {
+        statusBar()->showMessage(tr("The palette shown has no inks; add one to spatter"), 5000);
+        return;
+    }
+    m_document.spatter(brush);
+}
 
 // A pattern in the inks of the palette shown, made at once as one step of the history.
 void MainWindow::choosePattern()

@@ -92,6 +92,7 @@ private:
     void copySvg();
     void chooseImport();
     void choosePattern();
+    void spatter(QPointF center, double spread);
     std::vector<sim::Polygon> textOutlines(const QString& text, QPointF baselineStart) const;
     void previewText();
     void updateTitle();
@@ -108,6 +109,7 @@ private:
     PaletteDock* m_paletteDock = nullptr;
     TextToolBar* m_textOptions = nullptr;
     model::PatternStroke m_pattern;  // the last one made (Tools ▸ Pattern… starts from it)
+    std::uint64_t m_spatterSeed = 1;  // the next spatter's
     Recovery* m_recovery = nullptr;
     RecentFiles* m_recentFiles = nullptr;
     QAction* m_playAction = nullptr;

@@ -370,9 +370,22 @@ void Document::applyPattern(const PatternStroke& pattern)
         return;
     PatternStroke exact = pattern;
     exact.mode = CombStroke::Mode::Exact;
-    pushSimulationCommand(tr("Pattern: %1").arg(patternName(pattern.kind)), [&] {
+    applyTools(tr("Pattern: %1").arg(patternName(pattern.kind)), patternStrokes(exact, m_scene.canvas));
+}
+
+void Document::spatter(const SpatterStroke& brush)
+{
+    if (!canAddRegions() || brush.colors.empty())
+        return;
+    const std::vector<DropStroke> drops = brush.drops();
+    applyTools(tr("Spatter"), std::vector<Stroke>(drops.begin(), drops.end()));
+}
+
+void Document::applyTools(const QString& text, const std::vector<Stroke>& tools)
+{
+    pushSimulationCommand(text, [&] {
         RegionTable regions = m_regions;
-        for (const Stroke& tool : patternStrokes(exact, m_scene.canvas)) {
+        for (const Stroke& tool : tools) {
             if (const auto* drop = std::get_if<DropStroke>(&tool)) {
                 m_port.drop(drop->center, drop->radius);
                 regions.push_back({unusedNameIn(regions, tr("drop")), drop->color, true, int(regions.size())});

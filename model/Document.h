@@ -81,6 +81,8 @@ public:
     // A pattern's drops and passes as one command, its passes exact whatever its mode says: all of
     // it acts at once (model/Patterns.h).
     void applyPattern(const PatternStroke& pattern);
+    // A spatter's drops as one command, landing one after another at once.
+    void spatter(const SpatterStroke& brush);
     void beginStroke();
     void stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
     void addRegions(const QString& commandText, const std::vector<NewRegion>& regions);
@@ -139,6 +141,9 @@ private:
     std::shared_ptr<const CommandRecord> pushSimulationCommand(const QString& text,
                                                                const std::function<void()>& action);
     void pushRegionsCommand(const QString& text, RegionTable after);
+    // Drops (each a region named and coloured as the Drop tool's) and exact combs, in order, as
+    // one command.
+    void applyTools(const QString& text, const std::vector<Stroke>& tools);
     void replaceRegions(const RegionTable& regions);
     void applySettings(const EngineSettings& settings);
     void enforceHistoryBudget();

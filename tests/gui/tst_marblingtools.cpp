@@ -5,6 +5,7 @@
 // `vectorfluid render`.
 #include "FindChild.h"
 #include "WindowTest.h"
+#include "app/Canvas.h"
 #include "app/MainWindow.h"
 #include "app/PatternDialog.h"
 #include "app/SimulationController.h"
@@ -23,6 +24,8 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -145,6 +148,35 @@ private slots:
         QVERIFY2(summary.contains(QStringLiteral("more than 10000")), qPrintable(summary));
         QCOMPARE(w.document().undoStack().count(), 0);
         QCOMPARE(int(w.document().regions().size()), 1);
+    }
+
+    // B picks the Spatter tool; a click spatters twenty drops about it in the palette's inks, one
+    // step of the history; a drag sets how far they spread.
+    void spatterClickIsOneStep()
+    {
+        MainWindow& w = *m_window;
+        QTest::keyClick(&w, Qt::Key_B);
+        QCOMPARE(w.canvas().tool(), Tool::Spatter);
+        QTest::mouseClick(&w.canvas(), Qt::LeftButton, {}, w.canvas().mapFromCanvas({0.5, 0.5}).toPoint());
+        QCOMPARE(w.document().undoStack().count(), 1);
+        QCOMPARE(w.document().undoStack().text(0), QStringLiteral("Spatter"));
+        QCOMPARE(int(w.document().regions().size()), 21);
+        QCOMPARE(simulatedRegions(w), std::size_t(21));
+
+        const QPoint from = w.canvas().mapFromCanvas({0.3, 0.3}).toPoint();
+        const QPoint to = w.canvas().mapFromCanvas({0.3, 0.32}).toPoint();
+        QTest::mousePress(&w.canvas(), Qt::LeftButton, {}, from);
+        QTest::mouseMove(&w.canvas(), to);
+        QTest::mouseRelease(&w.canvas(), Qt::LeftButton, {}, to);
+        QCOMPARE(w.document().undoStack().count(), 2);
+        // Spread 0.02, radii up to 0.02: the twenty drops' ink (about 0.01 of area) packs into a
+        // disc of radius about 0.06 about the press; a click's spread of 0.15 would reach past 0.1.
+        const auto regions = (w.simulation().sync(), w.simulation().frame()->regions);
+        for (std::size_t r = 21; r < regions.size(); ++r)
+            for (const sim::Vec2& p : regions[r][0])
+                QVERIFY2(glm::distance(p, sim::Vec2(0.3, 0.3)) < 0.1, qPrintable(QString::number(glm::distance(p, sim::Vec2(0.3, 0.3)))));
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(int(w.document().regions().size()), 21);
     }
 
     void scenesOwnCombActsAsInRender()

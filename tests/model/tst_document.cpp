@@ -161,6 +161,22 @@ private slots:
         QCOMPARE(doc.undoStack().count(), 1);
     }
 
+    // A spatter is one command of its drops, in its colours.
+    void spatterIsOneCommand()
+    {
+        FakePort port;
+        Document doc(port);
+        doc.openScene(sceneWithRegions(1), QStringLiteral("reference"));
+        doc.spatter(SpatterStroke{0.0, {0.5, 0.5}, 0.2, 12, 0.01, 0.02, {Qt::green}, 3});
+        QCOMPARE(doc.undoStack().count(), 1);
+        QCOMPARE(doc.undoStack().text(0), QStringLiteral("Spatter"));
+        QCOMPARE(int(doc.regions().size()), 13);
+        QCOMPARE(port.state.regionCount, 13);
+        QCOMPARE(doc.regions().back().color, QColor(Qt::green));
+        doc.undoStack().undo();
+        QCOMPARE(names(doc.regions()), QStringList({"r0"}));
+    }
+
     void aCommandEndsWhereTheNextStarts()
     {
         FakePort port;
