@@ -318,11 +318,27 @@ void Canvas::paintOverlays(QPainter& painter, double dpr)
     paintSelection(painter, dpr);
     paintTrail(painter);
     paintTextEntry(painter);
+    paintCombPreview(painter);
     if (m_drag == Drag::Drop && m_dropPreview > 0.0) {
         painter.resetTransform();
         painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
         painter.setBrush(Qt::NoBrush);
         painter.drawEllipse(mapFromCanvas(m_dropCenter), m_dropPreview * m_scale, m_dropPreview * m_scale);
+    }
+}
+
+// The comb being dragged: each tine's path, from where the drag began to where it is now.
+void Canvas::paintCombPreview(QPainter& painter)
+{
+    if (m_drag != Drag::Comb || m_combTo == m_dropCenter)
+        return;
+    const QPointF along = m_combTo - m_dropCenter;
+    const QPointF across = QPointF(-along.y(), along.x()) / length(along);
+    painter.resetTransform();
+    painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
+    for (int k = 0; k < m_combTines; ++k) {
+        const QPointF offset = (k - (m_combTines - 1) / 2.0) * m_combSpacing * across;
+        painter.drawLine(mapFromCanvas(m_dropCenter + offset), mapFromCanvas(m_combTo + offset));
     }
 }
 
@@ -528,6 +544,10 @@ void Canvas::mousePressEvent(QMouseEvent* event)
         m_dropCenter = at;
         m_dropPreview = 0.0;
         break;
+    case Tool::Comb:
+        m_drag = Drag::Comb;
+        m_dropCenter = m_combTo = at;
+        break;
     case Tool::Stylus:
         m_drag = Drag::Stroke;
         m_trail = {at};
@@ -561,6 +581,10 @@ void Canvas::mouseMoveEvent(QMouseEvent* event)
         // A press that has not moved past the drag distance is still a click.
         m_dropPreview = length(pos - m_pressPos) >= QApplication::startDragDistance()
                           ? length(mapToCanvas(pos) - m_dropCenter) : 0.0;
+        update();
+        return;
+    case Drag::Comb:
+        m_combTo = mapToCanvas(pos);
         update();
         return;
     case Drag::Stroke: {
@@ -603,6 +627,11 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
             emit dropRequested(m_dropCenter, radius);
         return;
     }
+    case Drag::Comb:
+        update();
+        if (length(pos - m_pressPos) >= QApplication::startDragDistance())
+            emit combRequested(m_dropCenter, mapToCanvas(pos));
+        return;
     case Drag::Stroke: {
         const QPointF at = mapToCanvas(pos);
         if (at != m_strokeLast) {

@@ -25,7 +25,7 @@ class QNativeGestureEvent;
 
 namespace vf::app {
 
-enum class Tool { Select, Drop, Spatter, Stylus, Text, Pan };
+enum class Tool { Select, Drop, Spatter, Comb, Stylus, Text, Pan };
 
 class Canvas : public QWidget {
     Q_OBJECT
@@ -54,6 +54,12 @@ public:
     void setTextPreview(const QPainterPath& outlines, double letterHeight, const QColor& color);
 
     double clickDropRadius() const { return m_clickDropRadius; }
+    // The comb the Comb tool previews while dragged: its tines and their spacing (canvas units).
+    void setComb(int tines, double spacing)
+    {
+        m_combTines = tines;
+        m_combSpacing = spacing;
+    }
     void setClickDropRadius(double fractionOfWidth) { m_clickDropRadius = fractionOfWidth; }
 
     // Widget (logical pixel) position ↔ canvas units.
@@ -79,6 +85,8 @@ signals:
     void dropRequested(QPointF center, double radius);
     // The Spatter tool: drops within `spread` of `center` (dragged out as a drop's radius is).
     void spatterRequested(QPointF center, double spread);
+    // The Comb tool dragged from `from` to `to` (canvas units).
+    void combRequested(QPointF from, QPointF to);
     void strokeStarted(QPointF at);
     // `seconds`: between the two pointer events, so distance / seconds is the pen's speed.
     void strokeMoved(QPointF from, QPointF to, double seconds);
@@ -104,7 +112,7 @@ protected:
     void keyReleaseEvent(QKeyEvent* event) override;
 
 private:
-    enum class Drag { None, Pan, Drop, Stroke };
+    enum class Drag { None, Pan, Drop, Stroke, Comb };
 
     QSizeF canvasSize() const;
     PixelMapping toDevice(double dpr) const;
@@ -116,6 +124,7 @@ private:
     void paintSelection(QPainter& painter, double dpr);
     void paintTrail(QPainter& painter);
     void paintTextEntry(QPainter& painter);
+    void paintCombPreview(QPainter& painter);
     void finishText(bool commit);
     void zoomAbout(QPointF widgetPos, double factor);
     void setView(double scale, QPointF offset);
@@ -159,6 +168,9 @@ private:
     qint64 m_lastTime = 0;   // ...and when (ms, the pointer event's timestamp)
     QPointF m_dropCenter;    // canvas units
     double m_dropPreview = 0.0;  // canvas units; 0 while the press has not become a drag
+    QPointF m_combTo;        // canvas units: where the comb dragged from m_dropCenter is now
+    int m_combTines = 8;
+    double m_combSpacing = 0.08;
 
     std::deque<qint64> m_paintTimes;  // ms on m_clock, the last second's
     QElapsedTimer m_clock;

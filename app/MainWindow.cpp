@@ -6,6 +6,7 @@
 #include "app/MainWindow.h"
 
 #include "app/ClipboardExport.h"
+#include "app/CombToolBar.h"
 #include "app/ExportDialog.h"
 #include "app/PaletteDock.h"
 #include "app/PatternDialog.h"
@@ -172,6 +173,7 @@ void MainWindow::createTools()
         {tr("Se&lect"), QKeySequence(Qt::Key_V), Tool::Select, "toolSelect"},
         {tr("&Drop"), QKeySequence(Qt::Key_D), Tool::Drop, "toolDrop"},
         {tr("Spatte&r"), QKeySequence(Qt::Key_B), Tool::Spatter, "toolSpatter"},
+        {tr("&Comb"), QKeySequence(Qt::Key_C), Tool::Comb, "toolComb"},
         {tr("&Stylus"), QKeySequence(Qt::Key_S), Tool::Stylus, "toolStylus"},
         {tr("&Text"), QKeySequence(Qt::Key_T), Tool::Text, "toolText"},
         {tr("&Pan"), QKeySequence(Qt::Key_H), Tool::Pan, "toolPan"},
@@ -212,6 +214,14 @@ void MainWindow::createTools()
     m_textOptions->setVisible(false);
     connect(m_textOptions, &TextToolBar::changed, this, &MainWindow::previewText);
     connect(findChild<QAction*>(QStringLiteral("toolText")), &QAction::toggled, m_textOptions, &QWidget::setVisible);
+
+    m_combOptions = new CombToolBar(this);
+    addToolBar(m_combOptions);
+    m_combOptions->setVisible(false);
+    const auto showComb = [this] { m_canvas->setComb(m_combOptions->tines(), m_combOptions->spacing()); };
+    connect(m_combOptions, &CombToolBar::changed, this, showComb);
+    showComb();
+    connect(findChild<QAction*>(QStringLiteral("toolComb")), &QAction::toggled, m_combOptions, &QWidget::setVisible);
 }
 
 // The Simulation menu and the Playback tool bar: play, step, reset, and the two modes.
@@ -376,6 +386,9 @@ void MainWindow::connectDocument()
         m_document.drop(toVec(center), radius, m_inkColor);
     });
     connect(m_canvas, &Canvas::spatterRequested, this, &MainWindow::spatter);
+    connect(m_canvas, &Canvas::combRequested, this, [this](QPointF from, QPointF to) {
+        m_document.applyTools(tr("Comb"), {m_combOptions->comb(toVec(from), toVec(to))});
+    });
     connect(m_canvas, &Canvas::strokeStarted, this, [this] {
         m_document.beginStroke();
         m_simulation.setStroking(true);

@@ -366,7 +366,7 @@ void Document::drop(sim::Vec2 center, double radius, const QColor& color)
 
 void Document::applyPattern(const PatternStroke& pattern)
 {
-    if (!canAddRegions() || pattern.colors.empty() || patternProblem(pattern, m_scene.canvas))
+    if (pattern.colors.empty() || patternProblem(pattern, m_scene.canvas))
         return;
     PatternStroke exact = pattern;
     exact.mode = CombStroke::Mode::Exact;
@@ -375,7 +375,7 @@ void Document::applyPattern(const PatternStroke& pattern)
 
 void Document::spatter(const SpatterStroke& brush)
 {
-    if (!canAddRegions() || brush.colors.empty())
+    if (brush.colors.empty())
         return;
     const std::vector<DropStroke> drops = brush.drops();
     applyTools(tr("Spatter"), std::vector<Stroke>(drops.begin(), drops.end()));
@@ -383,6 +383,9 @@ void Document::spatter(const SpatterStroke& brush)
 
 void Document::applyTools(const QString& text, const std::vector<Stroke>& tools)
 {
+    const bool drops = std::any_of(tools.begin(), tools.end(), [](const Stroke& s) { return std::holds_alternative<DropStroke>(s); });
+    if (drops && !canAddRegions())
+        return;
     pushSimulationCommand(text, [&] {
         RegionTable regions = m_regions;
         for (const Stroke& tool : tools) {

@@ -83,6 +83,10 @@ public:
     void applyPattern(const PatternStroke& pattern);
     // A spatter's drops as one command, landing one after another at once.
     void spatter(const SpatterStroke& brush);
+    // Drops (each a region named and coloured as the Drop tool's) and exact combs, in order, as
+    // one command called `text`. Refused, like a drop, while the scene's own drops are landing
+    // if there is a drop among them.
+    void applyTools(const QString& text, const std::vector<Stroke>& tools);
     void beginStroke();
     void stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
     void addRegions(const QString& commandText, const std::vector<NewRegion>& regions);
@@ -141,9 +145,6 @@ private:
     std::shared_ptr<const CommandRecord> pushSimulationCommand(const QString& text,
                                                                const std::function<void()>& action);
     void pushRegionsCommand(const QString& text, RegionTable after);
-    // Drops (each a region named and coloured as the Drop tool's) and exact combs, in order, as
-    // one command.
-    void applyTools(const QString& text, const std::vector<Stroke>& tools);
     void replaceRegions(const RegionTable& regions);
     void applySettings(const EngineSettings& settings);
     void enforceHistoryBudget();

@@ -305,7 +305,8 @@ private slots:
             const char* action;
         } tools[] = {{Qt::Key_V, Tool::Select, "toolSelect"}, {Qt::Key_S, Tool::Stylus, "toolStylus"},
                      {Qt::Key_T, Tool::Text, "toolText"},     {Qt::Key_H, Tool::Pan, "toolPan"},
-                     {Qt::Key_B, Tool::Spatter, "toolSpatter"}, {Qt::Key_D, Tool::Drop, "toolDrop"}};
+                     {Qt::Key_B, Tool::Spatter, "toolSpatter"}, {Qt::Key_C, Tool::Comb, "toolComb"},
+                     {Qt::Key_D, Tool::Drop, "toolDrop"}};
         for (const auto& t : tools) {
             QTest::keyClick(&w, t.key);
             QVERIFY2(w.canvas().tool() == t.tool, qPrintable(QKeySequence(t.key).toString() + " picked no tool"));

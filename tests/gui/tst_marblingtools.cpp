@@ -12,6 +12,7 @@
 #include "model/Palette.h"
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
+#include "sim/Comb.h"
 #include "sim/Geometry.h"
 
 #include <QComboBox>
@@ -21,6 +22,8 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
+#include <QToolBar>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -51,6 +54,14 @@ void typeInto(QDoubleSpinBox* box, const QString& text)
     box->setFocus();
     QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
     QTest::keyClicks(box, text);
+}
+
+using Geometry = std::vector<std::vector<sim::Polygon>>;
+
+Geometry geometry(MainWindow& w)
+{
+    w.simulation().sync();
+    return w.simulation().frame()->regions;
 }
 
 std::size_t simulatedRegions(MainWindow& w)
@@ -177,6 +188,52 @@ private slots:
                 QVERIFY2(glm::distance(p, sim::Vec2(0.3, 0.3)) < 0.1, qPrintable(QString::number(glm::distance(p, sim::Vec2(0.3, 0.3)))));
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(int(w.document().regions().size()), 21);
+    }
+
+    // C picks the Comb tool and shows its options; a drag shows each tine's path while it lasts,
+    // and its release combs the ink exactly, one step of the history, which Ctrl+Z takes back.
+    void combDragPreviewsAndCombs()
+    {
+        MainWindow& w = *m_window;
+        QTest::keyClick(&w, Qt::Key_C);
+        QCOMPARE(w.canvas().tool(), Tool::Comb);
+        QVERIFY(test::child<QToolBar>(w, "combOptions")->isVisible());
+        auto* tines = test::child<QSpinBox>(w, "combTines");
+        tines->setFocus();
+        tines->selectAll();
+        QTest::keyClicks(tines, QStringLiteral("3"));
+        const Geometry before = geometry(w);
+
+        const QPoint from = w.canvas().mapFromCanvas({0.5, 0.2}).toPoint();
+        const QPoint to = w.canvas().mapFromCanvas({0.5, 0.35}).toPoint();
+        const QImage still = w.canvas().grab().toImage();
+        QTest::mousePress(&w.canvas(), Qt::LeftButton, {}, from);
+        QTest::mouseMove(&w.canvas(), to);
+        const QImage dragging = w.canvas().grab().toImage();
+        // Three tines 0.08 apart: the middle one's path runs down from the press.
+        const QPoint onPath = w.canvas().mapFromCanvas({0.5, 0.27}).toPoint();
+        const QPoint between = w.canvas().mapFromCanvas({0.54, 0.27}).toPoint();
+        QVERIFY(dragging.pixel(onPath) != still.pixel(onPath));
+        QCOMPARE(dragging.pixel(between), still.pixel(between));
+        QCOMPARE(w.document().undoStack().count(), 0);  // nothing until the release
+        QTest::mouseRelease(&w.canvas(), Qt::LeftButton, {}, to);
+
+        QCOMPARE(w.document().undoStack().count(), 1);
+        QCOMPARE(w.document().undoStack().text(0), QStringLiteral("Comb"));
+        const Geometry combed = geometry(w);
+        // The comb from and to where the pointer was, whole pixels mapped back onto the canvas.
+        const QPointF a = w.canvas().mapToCanvas(QPointF(from)), b = w.canvas().mapToCanvas(QPointF(to));
+        const sim::Comb comb{{a.x(), a.y()}, {b.x(), b.y()}, 3, 0.08, 0.02};
+        std::vector<sim::Vec2> expected;
+        for (const sim::Vec2& p : before[0][0])
+            expected.push_back(comb(p));
+        // Every vertex the circle had, moved by the exact comb, lies on the combed contour.
+        const double off = sim::directedHausdorffDistance(expected, combed[0][0]);
+        QVERIFY2(off < 1e-6, qPrintable(QString::number(off)));
+        QVERIFY(sim::hausdorffDistance(combed[0][0], before[0][0]) > 0.05);
+        QVERIFY(w.canvas().grab().toImage() != still);
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(sim::hausdorffDistance(geometry(w)[0][0], before[0][0]) < 1e-12);
     }
 
     void scenesOwnCombActsAsInRender()
