@@ -110,13 +110,13 @@ private slots:
             kind->setFocus();
             QTest::keyClick(kind, Qt::Key_Down);
             QTest::keyClick(kind, Qt::Key_Down);
-            typeInto(test::child<QDoubleSpinBox>(*dialog, "patternDropRadius"), QStringLiteral("0.2"));
+            typeInto(test::child<QDoubleSpinBox>(*dialog, "patternDropRadius"), QStringLiteral("0.3"));
             summary = test::child<QLabel>(*dialog, "patternSummary")->text();
             QTest::keyClick(dialog, Qt::Key_Return);
         });
         QTest::keyClick(&w, Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
 
-        const int drops = int(std::ceil(1.0 / (std::numbers::pi * 0.2 * 0.2)));
+        const int drops = int(std::ceil(1.0 / (std::numbers::pi * 0.3 * 0.3)));
         QCOMPARE(summary, QStringLiteral("Drops: %1, in %2 inks; then comb passes: 3. One step of the history.")
                               .arg(drops)
                               .arg(model::builtInPalettes()[0].colours.size()));
