@@ -1,6 +1,6 @@
 // The canvas widget: the view (zoom, pan, fit), the newest frame painted with level of detail and
-// cached paths, and the pointer's tools (drop, stylus, text, select, pan) with the previews they
-// draw (trail, text, selection). One file because the tools and the painting share the view's
+// cached paths, and the pointer's tools (drop, spatter, comb, stylus, text, select, pan) with the
+// previews they draw (drop or spatter circle, comb tines, trail, text, selection). One file because the tools and the painting share the view's
 // mapping and the paint caches they invalidate; the overlays with state of their own are in
 // CanvasOverlays. The seam for a split is the tools' input handling (the mouse and key events,
 // text entry, picking), which could become a controller that calls the view's public mapping.

@@ -440,8 +440,7 @@ void MainWindow::spatter(QPointF center, double spread)
     brush.smallest = 0.005 * m_document.scene().canvas.width;
     brush.largest = 0.02 * m_document.scene().canvas.width;
     brush.seed = m_spatterSeed++;
-    for (const model::PaletteColour& c : m_paletteDock->shown().colours)
-        brush.colors.push_back(c.colour);
+    brush.colors = m_paletteDock->inks();
     if (brush.colors.empty()) {
         statusBar()->showMessage(tr("The palette shown has no inks; add one to spatter"), 5000);
         return;
@@ -456,9 +455,7 @@ void MainWindow::choosePattern()
         m_report(tr("Cannot make a pattern yet"), tr("The scene's own drops are still landing; play on and try again."));
         return;
     }
-    m_pattern.colors.clear();
-    for (const model::PaletteColour& c : m_paletteDock->shown().colours)
-        m_pattern.colors.push_back(c.colour);
+    m_pattern.colors = m_paletteDock->inks();
     if (m_pattern.colors.empty()) {
         m_report(tr("Cannot make a pattern"), tr("The palette shown has no inks; add one first."));
         return;

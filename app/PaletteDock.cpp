@@ -15,6 +15,14 @@
 
 namespace vf::app {
 
+std::vector<QColor> PaletteDock::inks() const
+{
+    std::vector<QColor> colours;
+    for (const model::PaletteColour& c : shown().colours)
+        colours.push_back(c.colour);
+    return colours;
+}
+
 namespace {
 
 const QString filesKey = QStringLiteral("palettes/files");

@@ -19,6 +19,8 @@ public:
     explicit PaletteDock(QWidget* parent);
 
     const model::Palette& shown() const { return m_palettes[std::size_t(m_current)]; }
+    // The colours of the palette shown, for the tools that draw inks from it (spatter, patterns).
+    std::vector<QColor> inks() const;
     // The ink as it is now (from the tool bar or a swatch): what "Add ink" adds; a swatch of that
     // colour is marked.
     void setInkColour(const QColor& colour);

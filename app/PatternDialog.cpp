@@ -103,13 +103,11 @@ void PatternDialog::updateSummary()
         m_summary->setText(problem->message);
         return;
     }
-    const std::vector<model::Stroke> tools = model::patternStrokes(p, m_canvas);
-    const auto drops = std::count_if(tools.begin(), tools.end(),
-                                     [](const model::Stroke& s) { return std::holds_alternative<model::DropStroke>(s); });
+    const model::PatternSize size = model::patternSize(p, m_canvas);
     m_summary->setText(tr("Drops: %1, in %2 inks; then comb passes: %3. One step of the history.")
-                           .arg(drops)
+                           .arg(size.drops)
                            .arg(p.colors.size())
-                           .arg(tools.size() - std::size_t(drops)));
+                           .arg(size.passes));
 }
 
 } // namespace vf::app

@@ -102,6 +102,11 @@ QString patternName(Kind kind)
     return QStringLiteral("bouquet");
 }
 
+PatternSize patternSize(const PatternStroke& p, const Canvas& canvas)
+{
+    return {stoneDropCount(p, canvas), passes(p, canvas).size()};
+}
+
 std::optional<PatternProblem> patternProblem(const PatternStroke& p, const Canvas& canvas)
 {
     if (const double drops = stoneDropCount(p, canvas); drops > limits::maxSpatterDrops)

@@ -15,6 +15,13 @@ namespace vf::model {
 std::vector<Stroke> patternStrokes(const PatternStroke& pattern, const Canvas& canvas);
 inline constexpr double dropInterval = 0.002;
 
+// How much the pattern makes on this canvas, counted without making it.
+struct PatternSize {
+    double drops = 0.0;  // the stone's
+    std::size_t passes = 0;
+};
+PatternSize patternSize(const PatternStroke& pattern, const Canvas& canvas);
+
 // Why the pattern cannot be made on this canvas (more drops than a spatter may have, or more tines
 // than a comb), naming the key to change; empty when it can. Cheap: expands nothing.
 struct PatternProblem {
