@@ -1,9 +1,11 @@
 // The canvas widget: the view (zoom, pan, fit), the newest frame painted with level of detail and
-// cached paths, and the pointer's tools (drop, spatter, comb, stylus, text, select, pan) with the
-// previews they draw (drop or spatter circle, comb tines, trail, text, selection). One file because the tools and the painting share the view's
-// mapping and the paint caches they invalidate; the overlays with state of their own are in
-// CanvasOverlays. The seam for a split is the tools' input handling (the mouse and key events,
-// text entry, picking), which could become a controller that calls the view's public mapping.
+// cached paths, and the pointer's tools (drop, spatter, stylus, text, select, pan, and the
+// marbling tools: comb, circular comb, swirl) with the previews they draw (drop or spatter circle,
+// trail, text, selection). One file because the tools and the painting share the view's mapping
+// and the paint caches they invalidate; the overlays with state of their own are in
+// CanvasOverlays, the marbling tools' drags (their geometry, pens and previews) in MarblingDrag.
+// The seam for a split is the tools' input handling (the mouse and key events, text entry,
+// picking), which could become a controller that calls the view's public mapping.
 #include "app/Canvas.h"
 
 #include "app/CanvasOverlays.h"
@@ -318,27 +320,16 @@ void Canvas::paintOverlays(QPainter& painter, double dpr)
     paintSelection(painter, dpr);
     paintTrail(painter);
     paintTextEntry(painter);
-    paintCombPreview(painter);
+    if (m_drag == Drag::Marbling) {
+        painter.resetTransform();
+        m_marbling.paint(painter, QTransform(m_scale, 0.0, 0.0, m_scale, m_offset.x(), m_offset.y()),
+                         palette().color(QPalette::Highlight));
+    }
     if (m_drag == Drag::Drop && m_dropPreview > 0.0) {
         painter.resetTransform();
         painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
         painter.setBrush(Qt::NoBrush);
         painter.drawEllipse(mapFromCanvas(m_dropCenter), m_dropPreview * m_scale, m_dropPreview * m_scale);
-    }
-}
-
-// The comb being dragged: each tine's path, from where the drag began to where it is now.
-void Canvas::paintCombPreview(QPainter& painter)
-{
-    if (m_drag != Drag::Comb || m_combTo == m_dropCenter)
-        return;
-    const QPointF along = m_combTo - m_dropCenter;
-    const QPointF across = QPointF(-along.y(), along.x()) / length(along);
-    painter.resetTransform();
-    painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
-    for (int k = 0; k < m_combTines; ++k) {
-        const QPointF offset = (k - (m_combTines - 1) / 2.0) * m_combSpacing * across;
-        painter.drawLine(mapFromCanvas(m_dropCenter + offset), mapFromCanvas(m_combTo + offset));
     }
 }
 
@@ -545,8 +536,12 @@ void Canvas::mousePressEvent(QMouseEvent* event)
         m_dropPreview = 0.0;
         break;
     case Tool::Comb:
-        m_drag = Drag::Comb;
-        m_dropCenter = m_combTo = at;
+    case Tool::CircularComb:
+    case Tool::Swirl:
+        m_drag = Drag::Marbling;
+        m_marbling.begin(m_tool, at, QApplication::startDragDistance() / m_scale);
+        m_marblingInWater = false;
+        m_lastTime = qint64(event->timestamp());
         break;
     case Tool::Stylus:
         m_drag = Drag::Stroke;
@@ -583,8 +578,10 @@ void Canvas::mouseMoveEvent(QMouseEvent* event)
                           ? length(mapToCanvas(pos) - m_dropCenter) : 0.0;
         update();
         return;
-    case Drag::Comb:
-        m_combTo = mapToCanvas(pos);
+    case Drag::Marbling:
+        m_marbling.moveTo(mapToCanvas(pos));
+        if (m_marbling.inWater())
+            movePens(qint64(event->timestamp()));
         update();
         return;
     case Drag::Stroke: {
@@ -627,10 +624,17 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
             emit dropRequested(m_dropCenter, radius);
         return;
     }
-    case Drag::Comb:
+    case Drag::Marbling:
+        m_marbling.moveTo(mapToCanvas(pos));
         update();
-        if (length(pos - m_pressPos) >= QApplication::startDragDistance())
-            emit combRequested(m_dropCenter, mapToCanvas(pos));
+        if (!m_marbling.inWater()) {
+            if (m_marbling.acts())
+                emit toolApplied(m_marbling.tool());
+            return;
+        }
+        movePens(std::max(m_lastTime + 1, qint64(event->timestamp())));
+        if (m_marblingInWater)
+            emit strokeFinished();
         return;
     case Drag::Stroke: {
         const QPointF at = mapToCanvas(pos);
@@ -644,6 +648,23 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
         return;
     }
     }
+}
+
+// A marbling tool in the water: its pens move as far as the drag has gone, over the time since
+// they last moved (events within the same millisecond wait for the next, as the stylus's do).
+void Canvas::movePens(qint64 time)
+{
+    if (time <= m_lastTime)
+        return;
+    const std::vector<sim::StylusSegment> pens = m_marbling.pens(double(time - m_lastTime) / 1000.0, m_stylusRadius);
+    if (pens.empty())
+        return;
+    m_lastTime = time;
+    if (!m_marblingInWater) {
+        m_marblingInWater = true;
+        emit strokeStarted(mapToCanvas(m_pressPos));
+    }
+    emit pensMoved(pens);
 }
 
 void Canvas::keyPressEvent(QKeyEvent* event)

@@ -2,8 +2,10 @@
 // The canvas widget: draws the newest frame of the simulation with the document's region looks,
 // lets the user zoom and pan, and turns pointer input into tool requests in canvas units (origin
 // top-left, y down). It never touches the simulation: the main window connects its signals.
+#include "app/MarblingDrag.h"
 #include "app/RegionPaths.h"
 #include "app/TextEntry.h"
+#include "app/Tool.h"
 #include "model/Frame.h"
 #include "model/Regions.h"
 
@@ -24,8 +26,6 @@ class QPainter;
 class QNativeGestureEvent;
 
 namespace vf::app {
-
-enum class Tool { Select, Drop, Spatter, Comb, Stylus, Text, Pan };
 
 class Canvas : public QWidget {
     Q_OBJECT
@@ -54,12 +54,9 @@ public:
     void setTextPreview(const QPainterPath& outlines, double letterHeight, const QColor& color);
 
     double clickDropRadius() const { return m_clickDropRadius; }
-    // The comb the Comb tool previews while dragged: its tines and their spacing (canvas units).
-    void setComb(int tines, double spacing)
-    {
-        m_combTines = tines;
-        m_combSpacing = spacing;
-    }
+    // The options of the Comb, Circular comb or Swirl tool (MarblingToolBar::options), which its
+    // drags preview and make.
+    void setToolOptions(const model::Stroke& options) { m_marbling.setOptions(options); }
     void setClickDropRadius(double fractionOfWidth) { m_clickDropRadius = fractionOfWidth; }
 
     // Widget (logical pixel) position ↔ canvas units.
@@ -85,11 +82,15 @@ signals:
     void dropRequested(QPointF center, double radius);
     // The Spatter tool: drops within `spread` of `center` (dragged out as a drop's radius is).
     void spatterRequested(QPointF center, double spread);
-    // The Comb tool dragged from `from` to `to` (canvas units).
-    void combRequested(QPointF from, QPointF to);
+    // The Comb, Circular comb or Swirl tool dragged, exact: the tool as dragged (MarblingDrag::tool).
+    void toolApplied(const vf::model::Stroke& tool);
+    // A stroke through the water: the Stylus tool's, or a marbling tool's in the water (its first
+    // pens about to move).
     void strokeStarted(QPointF at);
-    // `seconds`: between the two pointer events, so distance / seconds is the pen's speed.
+    // The Stylus tool. `seconds`: between the two pointer events, so distance / seconds is the pen's speed.
     void strokeMoved(QPointF from, QPointF to, double seconds);
+    // A marbling tool in the water: its pens' moves since the last pointer event.
+    void pensMoved(const std::vector<vf::sim::StylusSegment>& pens);
     void strokeFinished();
     // The text being typed began or changed: textEntry() has it.
     void textEdited();
@@ -112,7 +113,7 @@ protected:
     void keyReleaseEvent(QKeyEvent* event) override;
 
 private:
-    enum class Drag { None, Pan, Drop, Stroke, Comb };
+    enum class Drag { None, Pan, Drop, Stroke, Marbling };
 
     QSizeF canvasSize() const;
     PixelMapping toDevice(double dpr) const;
@@ -124,7 +125,7 @@ private:
     void paintSelection(QPainter& painter, double dpr);
     void paintTrail(QPainter& painter);
     void paintTextEntry(QPainter& painter);
-    void paintCombPreview(QPainter& painter);
+    void movePens(qint64 time);
     void finishText(bool commit);
     void zoomAbout(QPointF widgetPos, double factor);
     void setView(double scale, QPointF offset);
@@ -168,9 +169,8 @@ private:
     qint64 m_lastTime = 0;   // ...and when (ms, the pointer event's timestamp)
     QPointF m_dropCenter;    // canvas units
     double m_dropPreview = 0.0;  // canvas units; 0 while the press has not become a drag
-    QPointF m_combTo;        // canvas units: where the comb dragged from m_dropCenter is now
-    int m_combTines = 8;
-    double m_combSpacing = 0.08;
+    MarblingDrag m_marbling;
+    bool m_marblingInWater = false;  // its pens have begun a stroke
 
     std::deque<qint64> m_paintTimes;  // ms on m_clock, the last second's
     QElapsedTimer m_clock;

@@ -6,8 +6,8 @@
 #include "app/MainWindow.h"
 
 #include "app/ClipboardExport.h"
-#include "app/CombToolBar.h"
 #include "app/ExportDialog.h"
+#include "app/MarblingToolBar.h"
 #include "app/PaletteDock.h"
 #include "app/PatternDialog.h"
 #include "app/RecentFiles.h"
@@ -46,6 +46,14 @@ const QString historyBudgetKey = QStringLiteral("history/budgetMB");
 sim::Vec2 toVec(QPointF p)
 {
     return {p.x(), p.y()};
+}
+
+// What the history calls a marbling tool's step.
+QString marblingToolName(Tool tool)
+{
+    return tool == Tool::Comb           ? MainWindow::tr("Comb")
+         : tool == Tool::CircularComb ? MainWindow::tr("Circular comb")
+                                        : MainWindow::tr("Swirl");
 }
 
 } // namespace
@@ -158,7 +166,7 @@ void MainWindow::createEditMenu()
 }
 
 // The tool bar and the Tools menu (one action per tool, each with its key), the ink colour, and
-// the Text tool's options bar.
+// the options bars of the Text tool and of the marbling tools.
 void MainWindow::createTools()
 {
     QToolBar* tools = addToolBar(tr("Tools"));
@@ -174,6 +182,8 @@ void MainWindow::createTools()
         {tr("&Drop"), QKeySequence(Qt::Key_D), Tool::Drop, "toolDrop"},
         {tr("Spatte&r"), QKeySequence(Qt::Key_B), Tool::Spatter, "toolSpatter"},
         {tr("&Comb"), QKeySequence(Qt::Key_C), Tool::Comb, "toolComb"},
+        {tr("Circular C&omb"), QKeySequence(Qt::Key_O), Tool::CircularComb, "toolCircularComb"},
+        {tr("S&wirl"), QKeySequence(Qt::Key_W), Tool::Swirl, "toolSwirl"},
         {tr("&Stylus"), QKeySequence(Qt::Key_S), Tool::Stylus, "toolStylus"},
         {tr("&Text"), QKeySequence(Qt::Key_T), Tool::Text, "toolText"},
         {tr("&Pan"), QKeySequence(Qt::Key_H), Tool::Pan, "toolPan"},
@@ -215,20 +225,27 @@ void MainWindow::createTools()
     connect(m_textOptions, &TextToolBar::changed, this, &MainWindow::previewText);
     connect(findChild<QAction*>(QStringLiteral("toolText")), &QAction::toggled, m_textOptions, &QWidget::setVisible);
 
-    m_combOptions = new CombToolBar(this);
-    addToolBar(m_combOptions);
-    m_combOptions->setVisible(false);
-    const auto showComb = [this] { m_canvas->setComb(m_combOptions->tines(), m_combOptions->spacing()); };
-    connect(m_combOptions, &CombToolBar::changed, this, showComb);
-    showComb();
-    connect(findChild<QAction*>(QStringLiteral("toolComb")), &QAction::toggled, m_combOptions, &QWidget::setVisible);
+    for (const auto& [kind, action] : {std::pair{MarblingToolBar::Kind::Comb, "toolComb"},
+                                       std::pair{MarblingToolBar::Kind::CircularComb, "toolCircularComb"},
+                                       std::pair{MarblingToolBar::Kind::Swirl, "toolSwirl"}}) {
+        auto* options = new MarblingToolBar(kind, this);
+        addToolBar(options);
+        options->setVisible(false);
+        const auto use = [this, options] { m_canvas->setToolOptions(options->options()); };
+        connect(options, &MarblingToolBar::changed, this, use);
+        use();
+        connect(findChild<QAction*>(QLatin1String(action)), &QAction::toggled, options, &QWidget::setVisible);
+    }
 }
 
 // The Simulation menu and the Playback tool bar: play, step, reset, and the two modes.
 void MainWindow::createSimulationMenu()
 {
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
-    QToolBar* playback = addToolBar(tr("Playback"));
+    auto* playback = new QToolBar(tr("Playback"), this);
+    // On the tools' row: the tools' options bars have a row of their own, so that a long one shows whole.
+    insertToolBar(m_textOptions, playback);
+    insertToolBarBreak(m_textOptions);
     playback->setObjectName(QStringLiteral("playback"));
     m_playAction = simulation->addAction(tr("&Play"));
     m_playAction->setObjectName(QStringLiteral("play"));
@@ -386,17 +403,19 @@ void MainWindow::connectDocument()
         m_document.drop(toVec(center), radius, m_inkColor);
     });
     connect(m_canvas, &Canvas::spatterRequested, this, &MainWindow::spatter);
-    connect(m_canvas, &Canvas::combRequested, this, [this](QPointF from, QPointF to) {
-        m_document.applyTools(tr("Comb"), {m_combOptions->comb(toVec(from), toVec(to))});
+    connect(m_canvas, &Canvas::toolApplied, this, [this](const model::Stroke& tool) {
+        m_document.applyTools(marblingToolName(m_canvas->tool()), {tool});
     });
     connect(m_canvas, &Canvas::strokeStarted, this, [this] {
-        m_document.beginStroke();
+        m_document.beginStroke(m_canvas->tool() == Tool::Stylus ? QString()
+                                                                : tr("%1 (in the water)").arg(marblingToolName(m_canvas->tool())));
         m_simulation.setStroking(true);
     });
     connect(m_canvas, &Canvas::strokeFinished, &m_simulation, [this] { m_simulation.setStroking(false); });
     connect(m_canvas, &Canvas::strokeMoved, this, [this](QPointF from, QPointF to, double seconds) {
-        m_document.stroke(toVec(from), toVec(to), m_document.settings().flow.stylusRadius, seconds);
+        m_document.stroke({{toVec(from), toVec(to), m_document.settings().flow.stylusRadius, seconds}});
     });
+    connect(m_canvas, &Canvas::pensMoved, &m_document, &model::Document::stroke);
     connect(m_canvas, &Canvas::textEdited, this, &MainWindow::previewText);
     connect(m_canvas, &Canvas::textCommitted, this, [this](QPointF at, const QString& text) { insertText(text, at); });
     connect(m_canvas, &Canvas::regionClicked, m_regionsDock, &RegionsDock::selectRegion);

@@ -20,7 +20,6 @@
 
 namespace vf::app {
 
-class CombToolBar;
 class PaletteDock;
 class RecentFiles;
 class Recovery;
@@ -109,7 +108,6 @@ private:
     SimulationPanel* m_panel = nullptr;
     PaletteDock* m_paletteDock = nullptr;
     TextToolBar* m_textOptions = nullptr;
-    CombToolBar* m_combOptions = nullptr;
     model::PatternStroke m_pattern;  // the last one made (Tools ▸ Pattern… starts from it)
     std::uint64_t m_spatterSeed = 1;  // the next spatter's
     Recovery* m_recovery = nullptr;

@@ -85,9 +85,9 @@ void SimulationController::applyMap(const sim::ExactMap& map)
     post([map](SimulationWorker& w) { w.applyMap(map); });
 }
 
-void SimulationController::stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
+void SimulationController::stylus(const std::vector<sim::StylusSegment>& pens)
 {
-    post([=](SimulationWorker& w) { w.stylus(from, to, radius, seconds); });
+    post([pens](SimulationWorker& w) { w.stylus(pens); });
 }
 
 void SimulationController::setPlaying(bool playing)

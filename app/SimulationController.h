@@ -26,7 +26,7 @@ public:
     void removeRegion(int region) override;
     void drop(sim::Vec2 center, double radius) override;
     void applyMap(const sim::ExactMap& map) override;
-    void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds) override;
+    void stylus(const std::vector<sim::StylusSegment>& pens) override;
     std::uint64_t requestCount() const override { return m_requests; }
 
     void setPlaying(bool playing);

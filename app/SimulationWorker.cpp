@@ -167,23 +167,27 @@ void SimulationWorker::applyMap(const sim::ExactMap& map)
         stopWith(tr("vertex limit reached (%1 vertices)").arg(m_simulation->vertexCount()));
 }
 
-void SimulationWorker::stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
+void SimulationWorker::stylus(const std::vector<sim::StylusSegment>& pens)
 {
     if (!m_simulation)
         return;
-    const sim::StylusSegment segment{from, to, radius, seconds};
-    const int parts = std::max(1, int(std::lround(seconds / m_scene.time.dt)));
-    for (int k = 0; k < parts; ++k)
-        m_pen.push_back(segment.part(k, parts));
+    const std::size_t first = m_pen.size();
+    for (const sim::StylusSegment& pen : pens) {
+        const int parts = std::max(1, int(std::lround(pen.duration / m_scene.time.dt)));
+        if (m_pen.size() < first + std::size_t(parts))
+            m_pen.resize(first + std::size_t(parts));
+        for (int k = 0; k < parts; ++k)
+            m_pen[first + std::size_t(k)].push_back(pen.part(k, parts));
+    }
 }
 
-// One part a step: each covers about one step's time.
+// One part of each pen a step: each covers about one step's time.
 void SimulationWorker::feedPen()
 {
     if (m_pen.empty())
         return;
-    const sim::StylusSegment& part = m_pen.front();
-    m_simulation->stylus(part.from, part.to, part.radius, part.duration);
+    for (const sim::StylusSegment& part : m_pen.front())
+        m_simulation->stylus(part.from, part.to, part.radius, part.duration);
     m_pen.pop_front();
 }
 

@@ -38,10 +38,11 @@ public:
     void removeRegion(int region);
     void drop(sim::Vec2 center, double radius);
     void applyMap(const sim::ExactMap& map);
-    // The pen's motion is fed to the simulation over the steps its duration covers, one step's
+    // The pens' motion is fed to the simulation over the steps its duration covers, one step's
     // worth a step: handed over whole, a pointer event's 20 ms would push during one step of 5 ms
-    // and leave the water idle for three, and a viscous fluid would barely follow the pen.
-    void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
+    // and leave the water idle for three, and a viscous fluid would barely follow the pen. Pens
+    // given together (a comb's tines) push in the same steps; later ones after them.
+    void stylus(const std::vector<sim::StylusSegment>& pens);
     void setPlaying(bool playing);
     // While a stylus stroke is drawn the simulation runs even when paused, so that the water
     // answers the pen; it stops again with the stroke unless playing.
@@ -87,7 +88,8 @@ private:
     qint64 m_nextStepAt = 0;       // ms on m_clock
     bool m_playing = false;
     bool m_stroking = false;
-    std::deque<sim::StylusSegment> m_pen;  // pen input not yet fed, in parts of about one step each
+    // Pen input not yet fed: for each step to come, the parts of the pens' moves it takes.
+    std::deque<std::vector<sim::StylusSegment>> m_pen;
     bool m_velocityWanted = false;
     std::uint64_t m_handled = 0;   // requests done
     std::int64_t m_steps = 0;

@@ -392,25 +392,29 @@ void Document::applyTools(const QString& text, const std::vector<Stroke>& tools)
             if (const auto* drop = std::get_if<DropStroke>(&tool)) {
                 m_port.drop(drop->center, drop->radius);
                 regions.push_back({unusedNameIn(regions, tr("drop")), drop->color, true, int(regions.size())});
+            } else if (const auto* comb = std::get_if<CombStroke>(&tool)) {
+                m_port.applyMap(comb->map());
+            } else if (const auto* circular = std::get_if<CircularCombStroke>(&tool)) {
+                m_port.applyMap(circular->map());
             } else {
-                m_port.applyMap(std::get<CombStroke>(tool).map());
+                m_port.applyMap(std::get<SwirlStroke>(tool).map());
             }
         }
         replaceRegions(regions);
     });
 }
 
-void Document::beginStroke()
+void Document::beginStroke(const QString& text)
 {
-    m_stroke = pushSimulationCommand(tr("Stylus stroke"), [] {});
+    m_stroke = pushSimulationCommand(text.isEmpty() ? tr("Stylus stroke") : text, [] {});
 }
 
-void Document::stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds)
+void Document::stroke(const std::vector<sim::StylusSegment>& pens)
 {
     // Only while the stroke's command is still the open one: after an undo in mid-stroke (or any
     // other command) the rest of the pen's path belongs to no command and is dropped.
     if (const auto stroke = m_stroke.lock(); stroke && openCommand() == stroke.get())
-        m_port.stylus(from, to, radius, seconds);
+        m_port.stylus(pens);
 }
 
 void Document::addRegions(const QString& commandText, const std::vector<NewRegion>& regions)

@@ -83,12 +83,14 @@ public:
     void applyPattern(const PatternStroke& pattern);
     // A spatter's drops as one command, landing one after another at once.
     void spatter(const SpatterStroke& brush);
-    // Drops (each a region named and coloured as the Drop tool's) and exact combs, in order, as
-    // one command called `text`. Refused, like a drop, while the scene's own drops are landing
+    // Drops (each a region named and coloured as the Drop tool's) and exact combs, circular combs
+    // and swirls, in order, as one command called `text`. Refused, like a drop, while the scene's own drops are landing
     // if there is a drop among them.
     void applyTools(const QString& text, const std::vector<Stroke>& tools);
-    void beginStroke();
-    void stroke(sim::Vec2 from, sim::Vec2 to, double radius, double seconds);
+    // A stroke of pens through the water, live: one command called `text` ("Stylus stroke" when
+    // empty) for all the pens' moves until the next command.
+    void beginStroke(const QString& text = {});
+    void stroke(const std::vector<sim::StylusSegment>& pens);
     void addRegions(const QString& commandText, const std::vector<NewRegion>& regions);
     // `control` names what changed them (a widget of the settings panel): changes by one control
     // while the command it began is still the open top of the history join that command, so that

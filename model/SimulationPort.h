@@ -5,6 +5,7 @@
 #include "model/EngineSettings.h"
 #include "model/Scene.h"
 #include "model/StateSlot.h"
+#include "sim/Stylus.h"
 
 #include <cstdint>
 #include <vector>
@@ -32,8 +33,9 @@ public:
     virtual void drop(sim::Vec2 center, double radius) = 0;
     // A tool's exact map (a comb's, a swirl's) applied to all the ink at once.
     virtual void applyMap(const sim::ExactMap& map) = 0;
-    // The pen moved from `from` to `to` in `seconds` of wall time; it acts during the next step.
-    virtual void stylus(sim::Vec2 from, sim::Vec2 to, double radius, double seconds) = 0;
+    // Pens moving together (a stylus, or a comb's tines in the water), each from `from` to `to` in
+    // `duration` seconds of wall time; they act together, during the next steps.
+    virtual void stylus(const std::vector<sim::StylusSegment>& pens) = 0;
 
     // How many requests have been made so far; a frame says how many it has seen (Frame::serial).
     virtual std::uint64_t requestCount() const = 0;

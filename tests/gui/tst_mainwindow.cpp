@@ -235,7 +235,7 @@ private slots:
         QVERIFY(!w.simulation().frame()->velocity);  // not read back while nobody shows it
         test::child<QAction>(w, "showVelocity")->trigger();
         w.document().beginStroke();
-        w.document().stroke({0.2, 0.5}, {0.8, 0.5}, 0.05, 0.1);
+        w.document().stroke({{{0.2, 0.5}, {0.8, 0.5}, 0.05, 0.1}});
         w.simulation().stepOnce();
         w.simulation().sync();
         const auto& field = w.simulation().frame()->velocity;
@@ -306,6 +306,7 @@ private slots:
         } tools[] = {{Qt::Key_V, Tool::Select, "toolSelect"}, {Qt::Key_S, Tool::Stylus, "toolStylus"},
                      {Qt::Key_T, Tool::Text, "toolText"},     {Qt::Key_H, Tool::Pan, "toolPan"},
                      {Qt::Key_B, Tool::Spatter, "toolSpatter"}, {Qt::Key_C, Tool::Comb, "toolComb"},
+                     {Qt::Key_O, Tool::CircularComb, "toolCircularComb"}, {Qt::Key_W, Tool::Swirl, "toolSwirl"},
                      {Qt::Key_D, Tool::Drop, "toolDrop"}};
         for (const auto& t : tools) {
             QTest::keyClick(&w, t.key);
@@ -600,7 +601,7 @@ private slots:
         QCOMPARE(w.document().undoStack().count(), 1);
         // Shape design: motion dies within half a second of a stroke (paper §5.2; 100 steps of 5 ms).
         w.document().beginStroke();
-        w.document().stroke({0.2, 0.5}, {0.8, 0.5}, model::shapeDesignPreset.stylusRadius, 0.1);
+        w.document().stroke({{{0.2, 0.5}, {0.8, 0.5}, model::shapeDesignPreset.stylusRadius, 0.1}});
         w.simulation().stepOnce();
         const Geometry a = geometry(w);
         for (int i = 0; i < 100; ++i)

@@ -1,8 +1,10 @@
-// The marbling tools in the main window, by keys. Tools ▸ Pattern…: the dialog says how many drops
-// the pattern makes on this canvas, OK makes it as one step of the history in the inks of the
-// palette shown, and the undo and redo keys take it back and bring it again; a pattern the canvas
-// cannot hold is refused in the dialog. A scene's own exact tools act in the app as they do in
-// `vectorfluid render`.
+// The marbling tools in the main window, by keys and mouse drags. Tools ▸ Pattern…: the dialog says
+// how many drops the pattern makes on this canvas, OK makes it as one step of the history in the
+// inks of the palette shown, and the undo and redo keys take it back and bring it again; a pattern
+// the canvas cannot hold is refused in the dialog. The Comb (straight or wavy), Circular comb and
+// Swirl tools preview their drag and apply their exact map on release, or push the water while
+// dragged; each drag is one step of the history, kept in a saved project. A scene's own exact
+// tools act in the app as they do in `vectorfluid render`.
 #include "FindChild.h"
 #include "WindowTest.h"
 #include "app/Canvas.h"
@@ -13,6 +15,7 @@
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
 #include "sim/Comb.h"
+#include "sim/ExactMap.h"
 #include "sim/Geometry.h"
 
 #include <QComboBox>
@@ -62,6 +65,62 @@ Geometry geometry(MainWindow& w)
 {
     w.simulation().sync();
     return w.simulation().frame()->regions;
+}
+
+// The still scene's ink in water that flows: what the tools in the water can push.
+model::Scene waterScene()
+{
+    model::Scene scene = stillScene();
+    scene.flow = model::FlowSpec{};
+    scene.time.dt = 0.01;  // a pointer move of 20 ms pushes over two steps
+    return scene;
+}
+
+// Whether the pixels about `at` (a dashed line's gap is shorter than the square) differ at all.
+bool changedNear(const QImage& before, const QImage& after, QPoint at, int reach = 3)
+{
+    for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx)
+            if (before.pixel(at + QPoint(dx, dy)) != after.pixel(at + QPoint(dx, dy)))
+                return true;
+    return false;
+}
+
+// A drag of `moves` moves, 20 ms apart: from `centre` out to `radius` along +x, then round it by
+// `degrees` (from +x towards +y, as canvas coordinates go) in equal steps. The pointer's positions
+// after the press, in widget pixels.
+QList<QPoint> dragRound(Canvas& canvas, sim::Vec2 centre, double radius, double degrees, int moves)
+{
+    QList<QPoint> path;
+    for (int i = 0; i <= moves; ++i) {
+        const double a = degrees * std::numbers::pi / 180.0 * i / moves;
+        path << canvas.mapFromCanvas(QPointF(centre.x + radius * std::cos(a), centre.y + radius * std::sin(a))).toPoint();
+    }
+    QTest::mousePress(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({centre.x, centre.y}).toPoint());
+    for (const QPoint& p : path)
+        QTest::mouseMove(&canvas, p, 20);
+    return path;
+}
+
+// The angle (radians) the pointer's path sweeps about `centre`, in canvas units as the canvas
+// counts it: the pixels the pointer really went through.
+double sweptAbout(const Canvas& canvas, QPointF centre, const QList<QPoint>& path)
+{
+    double swept = 0.0;
+    for (int i = 1; i < path.size(); ++i) {
+        const QPointF a = canvas.mapToCanvas(QPointF(path[i - 1])) - centre, b = canvas.mapToCanvas(QPointF(path[i])) - centre;
+        swept += std::remainder(std::atan2(b.y(), b.x()) - std::atan2(a.y(), a.x()), 2.0 * std::numbers::pi);
+    }
+    return swept;
+}
+
+// The largest distance of `before`'s vertices, moved by `map`, from the contour `after`.
+double offMap(const sim::ExactMap& map, const sim::Polygon& before, const sim::Polygon& after)
+{
+    std::vector<sim::Vec2> expected;
+    for (const sim::Vec2& p : before)
+        expected.push_back(sim::mapped(map, p));
+    return sim::directedHausdorffDistance(expected, after);
 }
 
 std::size_t simulatedRegions(MainWindow& w)
@@ -232,6 +291,180 @@ private slots:
         QVERIFY2(off < 1e-6, qPrintable(QString::number(off)));
         QVERIFY(sim::hausdorffDistance(combed[0][0], before[0][0]) > 0.05);
         QVERIFY(w.canvas().grab().toImage() != still);
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(sim::hausdorffDistance(geometry(w)[0][0], before[0][0]) < 1e-12);
+    }
+
+    // A wavy comb: the Comb bar's wave shows in the tines' paths while dragged, and the release
+    // combs the ink by the wavy map.
+    void wavyCombPreviewsItsWaves()
+    {
+        MainWindow& w = *m_window;
+        QTest::keyClick(&w, Qt::Key_C);
+        auto* tines = test::child<QSpinBox>(w, "combTines");
+        tines->setFocus();
+        tines->selectAll();
+        QTest::keyClicks(tines, QStringLiteral("1"));
+        typeInto(test::child<QDoubleSpinBox>(w, "combAmplitude"), QStringLiteral("0.05"));
+        const Geometry before = geometry(w);
+        const QImage still = w.canvas().grab().toImage();
+        const QPoint from = w.canvas().mapFromCanvas({0.5, 0.2}).toPoint(), to = w.canvas().mapFromCanvas({0.5, 0.6}).toPoint();
+        QTest::mousePress(&w.canvas(), Qt::LeftButton, {}, from);
+        QTest::mouseMove(&w.canvas(), to);
+        const QImage dragging = w.canvas().grab().toImage();
+        // The wave (wavelength 0.2, its phase 0 at the middle, y = 0.4) is 0.05 to one side a
+        // quarter wave below the middle and to the other a quarter above; the straight line is bare.
+        const auto near = [&](double x, double y) { return changedNear(still, dragging, w.canvas().mapFromCanvas({x, y}).toPoint()); };
+        QVERIFY((near(0.45, 0.45) && near(0.55, 0.35)) || (near(0.55, 0.45) && near(0.45, 0.35)));
+        QVERIFY(!near(0.5, 0.45) && !near(0.5, 0.35));
+        QTest::mouseRelease(&w.canvas(), Qt::LeftButton, {}, to);
+
+        QCOMPARE(w.document().undoStack().count(), 1);
+        const QPointF a = w.canvas().mapToCanvas(QPointF(from)), b = w.canvas().mapToCanvas(QPointF(to));
+        const sim::Comb wavy{{a.x(), a.y()}, {b.x(), b.y()}, 1, 0.08, 0.02, 0.05, 0.2, 0.0};
+        const Geometry combed = geometry(w);
+        const double off = offMap(wavy, before[0][0], combed[0][0]);
+        QVERIFY2(off < 1e-6, qPrintable(QString::number(off)));
+        sim::Comb straight = wavy;
+        straight.amplitude = 0.0;
+        QVERIFY(offMap(straight, before[0][0], combed[0][0]) > 1e-3);  // the wave made a difference
+    }
+
+    // O picks the Circular comb and shows its options. Pressed at the centre and dragged out and
+    // a quarter way round, it shows the tines' circles and the arcs they sweep; the release turns the
+    // ink about the centre the way the pointer went, one step of the history, which the undo and
+    // redo keys take back and bring again.
+    void circularCombTurnsTheInkAboutThePress()
+    {
+        MainWindow& w = *m_window;
+        Canvas& canvas = w.canvas();
+        QTest::keyClick(&w, Qt::Key_O);
+        QCOMPARE(canvas.tool(), Tool::CircularComb);
+        QVERIFY(test::child<QAction>(w, "toolCircularComb")->isChecked());
+        QVERIFY(test::child<QToolBar>(w, "circularCombOptions")->isVisible());
+        QVERIFY(!test::child<QToolBar>(w, "combOptions")->isVisible());
+        auto* tines = test::child<QSpinBox>(w, "circularCombTines");
+        tines->setFocus();
+        tines->selectAll();
+        QTest::keyClicks(tines, QStringLiteral("2"));
+        typeInto(test::child<QDoubleSpinBox>(w, "circularCombSpacing"), QStringLiteral("0.08"));
+        typeInto(test::child<QDoubleSpinBox>(w, "circularCombInnerRadius"), QStringLiteral("0.1"));
+        const Geometry before = geometry(w);
+        const QImage still = canvas.grab().toImage();
+
+        const sim::Vec2 centre(0.35, 0.5);  // the ink's circle reaches from 0.05 to 0.35 of it
+        const QList<QPoint> path = dragRound(canvas, centre, 0.22, 90.0, 6);
+        const QImage dragging = canvas.grab().toImage();
+        QCOMPARE(w.document().undoStack().count(), 0);  // nothing until the release
+        // The outer tine (radius 0.18): its arc swept from +x towards +y, its circle's dashes
+        // elsewhere; between the tines' circles nothing.
+        QVERIFY(changedNear(still, dragging, canvas.mapFromCanvas({centre.x + 0.18 / std::sqrt(2.0), centre.y + 0.18 / std::sqrt(2.0)}).toPoint()));
+        QVERIFY(changedNear(still, dragging, canvas.mapFromCanvas({centre.x, centre.y - 0.18}).toPoint()));
+        QVERIFY(!changedNear(still, dragging, canvas.mapFromCanvas({centre.x + 0.14 / std::sqrt(2.0), centre.y - 0.14 / std::sqrt(2.0)}).toPoint()));
+        QTest::mouseRelease(&canvas, Qt::LeftButton, {}, path.last());
+
+        QCOMPARE(w.document().undoStack().count(), 1);
+        QCOMPARE(w.document().undoStack().text(0), QStringLiteral("Circular comb"));
+        const QPointF pressed = canvas.mapToCanvas(QPointF(canvas.mapFromCanvas({centre.x, centre.y}).toPoint()));
+        const double swept = sweptAbout(canvas, pressed, path);
+        QVERIFY(std::abs(swept - std::numbers::pi / 2.0) < 0.05);
+        const sim::CircularComb comb{{pressed.x(), pressed.y()}, 0.1, 2, 0.08, 0.02, swept};
+        const Geometry combed = geometry(w);
+        const double off = offMap(comb, before[0][0], combed[0][0]);
+        QVERIFY2(off < 1e-6, qPrintable(QString::number(off)));
+        QVERIFY(offMap(comb.inverse(), before[0][0], combed[0][0]) > 0.01);  // not the other way round
+        QVERIFY(sim::hausdorffDistance(combed[0][0], before[0][0]) > 0.05);
+
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(sim::hausdorffDistance(geometry(w)[0][0], before[0][0]) < 1e-12);
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QVERIFY(sim::hausdorffDistance(geometry(w)[0][0], combed[0][0]) < 1e-12);
+
+        // Saved and opened again, the project has the combed ink and the step to undo.
+        const QString project = m_dir.filePath(QStringLiteral("combed.vfproj"));
+        QVERIFY(w.saveTo(project));
+        QVERIFY(w.openFile(project));
+        QVERIFY(sim::hausdorffDistance(geometry(w)[0][0], combed[0][0]) < 1e-12);
+        QCOMPARE(w.document().undoStack().count(), 1);
+        QCOMPARE(w.document().undoStack().text(0), QStringLiteral("Circular comb"));
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(sim::hausdorffDistance(geometry(w)[0][0], before[0][0]) < 1e-12);
+    }
+
+    // W picks the Swirl. Pressed at the centre and dragged out and a quarter way round the other
+    // way: the circle as far out as the pointer and an arrow along the arc; the release swirls
+    // the ink by the vortex of that radius and angle, one step of the history.
+    void swirlTurnsAsFarAsThePointerWent()
+    {
+        MainWindow& w = *m_window;
+        Canvas& canvas = w.canvas();
+        QTest::keyClick(&w, Qt::Key_W);
+        QCOMPARE(canvas.tool(), Tool::Swirl);
+        QVERIFY(test::child<QToolBar>(w, "swirlOptions")->isVisible());
+        const Geometry before = geometry(w);
+        const QImage still = canvas.grab().toImage();
+
+        const sim::Vec2 centre(0.5, 0.3);  // on the ink's edge
+        const QList<QPoint> path = dragRound(canvas, centre, 0.15, -90.0, 8);
+        const QImage dragging = canvas.grab().toImage();
+        QVERIFY(changedNear(still, dragging, canvas.mapFromCanvas({centre.x + 0.15 / std::sqrt(2.0), centre.y - 0.15 / std::sqrt(2.0)}).toPoint()));
+        QVERIFY(changedNear(still, dragging, canvas.mapFromCanvas({centre.x - 0.15, centre.y}).toPoint()));
+        QVERIFY(!changedNear(still, dragging, canvas.mapFromCanvas({centre.x - 0.07, centre.y}).toPoint()));
+        QTest::mouseRelease(&canvas, Qt::LeftButton, {}, path.last());
+
+        QCOMPARE(w.document().undoStack().count(), 1);
+        QCOMPARE(w.document().undoStack().text(0), QStringLiteral("Swirl"));
+        const QPointF pressed = canvas.mapToCanvas(QPointF(canvas.mapFromCanvas({centre.x, centre.y}).toPoint()));
+        const QPointF released = canvas.mapToCanvas(QPointF(path.last()));
+        const double radius = std::hypot(released.x() - pressed.x(), released.y() - pressed.y());
+        const double swept = sweptAbout(canvas, pressed, path);
+        QVERIFY(std::abs(swept + std::numbers::pi / 2.0) < 0.05);
+        const sim::Swirl swirl{{pressed.x(), pressed.y()}, radius, swept};
+        const Geometry swirled = geometry(w);
+        const double off = offMap(swirl, before[0][0], swirled[0][0]);
+        QVERIFY2(off < 1e-6, qPrintable(QString::number(off)));
+        QVERIFY(sim::hausdorffDistance(swirled[0][0], before[0][0]) > 0.02);
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(sim::hausdorffDistance(geometry(w)[0][0], before[0][0]) < 1e-12);
+    }
+
+    // In the water (the bar's mode), each tool pushes the water while dragged, all its pens one
+    // step of the history named for it; undone, the ink is back where it was.
+    void toolsInTheWaterPushTheInk_data()
+    {
+        QTest::addColumn<int>("key");
+        QTest::addColumn<QString>("mode");
+        QTest::addColumn<QString>("step");
+        QTest::newRow("comb") << int(Qt::Key_C) << "combMode" << "Comb (in the water)";
+        QTest::newRow("circular comb") << int(Qt::Key_O) << "circularCombMode" << "Circular comb (in the water)";
+        QTest::newRow("swirl") << int(Qt::Key_W) << "swirlMode" << "Swirl (in the water)";
+    }
+
+    void toolsInTheWaterPushTheInk()
+    {
+        QFETCH(int, key);
+        QFETCH(QString, mode);
+        QFETCH(QString, step);
+        const QString path = m_dir.filePath(QStringLiteral("water.vfscene"));
+        QCOMPARE(model::writeSceneFile(waterScene(), path), QString());
+        MainWindow& w = *m_window;
+        QVERIFY(w.openFile(path));
+        w.simulation().setPlaying(false);
+        QTest::keyClick(&w, Qt::Key(key));
+        auto* modes = test::child<QComboBox>(w, mode.toLatin1().constData());
+        modes->setFocus();
+        QTest::keyClick(modes, Qt::Key_Down);
+        QCOMPARE(modes->currentText(), QStringLiteral("In the water"));
+        const Geometry before = geometry(w);
+
+        const QList<QPoint> moves = dragRound(w.canvas(), {0.35, 0.5}, 0.2, 180.0, 10);
+        QTest::mouseRelease(&w.canvas(), Qt::LeftButton, {}, moves.last(), 20);
+        QCOMPARE(w.document().undoStack().count(), 1);
+        QCOMPARE(w.document().undoStack().text(0), step);
+        for (int i = 0; i < 30; ++i)  // the pens' moves not yet fed, and the water they set going
+            w.simulation().stepOnce();
+        const double moved = sim::hausdorffDistance(geometry(w)[0][0], before[0][0]);
+        QVERIFY2(moved > 0.01, qPrintable(QString::number(moved)));
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
         QVERIFY(sim::hausdorffDistance(geometry(w)[0][0], before[0][0]) < 1e-12);
     }

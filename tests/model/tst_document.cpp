@@ -57,7 +57,7 @@ public:
     void removeRegion(int region) override { ++requests, state = withoutRegion(state, region); }
     void drop(sim::Vec2, double) override { ++requests, addContour(); }
     void applyMap(const sim::ExactMap&) override { ++requests, ++maps; }
-    void stylus(sim::Vec2, sim::Vec2, double, double seconds) override { ++requests, state.time += seconds; }
+    void stylus(const std::vector<sim::StylusSegment>& pens) override { ++requests, state.time += pens.front().duration; }
     std::uint64_t requestCount() const override { return requests; }
 
     void flow(double seconds) { state.time += seconds; }  // what playing does between requests
@@ -183,7 +183,7 @@ private slots:
         Document doc(port);
         doc.openScene(sceneWithRegions(1), QStringLiteral("reference"));
         doc.beginStroke();
-        doc.stroke({0.1, 0.1}, {0.2, 0.2}, 0.03, 0.1);
+        doc.stroke({{{0.1, 0.1}, {0.2, 0.2}, 0.03, 0.1}});
         port.flow(0.4);
         const sim::SimulationState strokeEnd = port.state;
         doc.drop({0.5, 0.5}, 0.1, Qt::blue);
@@ -291,10 +291,10 @@ private slots:
         doc.openScene(sceneWithRegions(1), QStringLiteral("reference"));
         const sim::SimulationState start = port.state;
         doc.beginStroke();
-        doc.stroke({0.1, 0.1}, {0.2, 0.1}, 0.03, 0.05);
+        doc.stroke({{{0.1, 0.1}, {0.2, 0.1}, 0.03, 0.05}});
         doc.undoStack().undo();
         QVERIFY(port.state == start);
-        doc.stroke({0.2, 0.1}, {0.3, 0.1}, 0.03, 0.05);  // the pen is still down
+        doc.stroke({{{0.2, 0.1}, {0.3, 0.1}, 0.03, 0.05}});  // the pen is still down
         QVERIFY2(port.state == start, "the rest of an undone stroke is dropped");
     }
 
@@ -333,7 +333,7 @@ private slots:
         QVERIFY(!trimmed.isEmpty());
         QVERIFY(doc.isModified());
         const sim::SimulationState start = port.state;
-        doc.stroke({0.1, 0.1}, {0.2, 0.1}, 0.03, 0.05);
+        doc.stroke({{{0.1, 0.1}, {0.2, 0.1}, 0.03, 0.05}});
         QVERIFY2(!(port.state == start), "the stroke still moves the fluid");
         const sim::SimulationState end = port.state;
         doc.undoStack().undo();
