@@ -1,26 +1,29 @@
 #include "sim/AreaCorrection.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vf::sim {
 
-void correctArea(Polygon& polygon, double targetArea)
+void correctArea(Polygon& polygon, double targetArea, double shortEdge)
 {
     const std::size_t n = polygon.size();
     if (n < 3)
         return;
-    Polygon gradient(n);
-    double gradientNorm2 = 0.0;
+    Polygon direction(n);
+    double rate = 0.0;  // Σ g_i·u_i: the area's rate of change under the offset
     for (std::size_t i = 0; i < n; ++i) {
         const Vec2 d = polygon[(i + 1) % n] - polygon[(i + n - 1) % n];
-        gradient[i] = 0.5 * Vec2(d.y, -d.x);  // ∂A/∂v_i for the shoelace area
-        gradientNorm2 += gradient[i].x * gradient[i].x + gradient[i].y * gradient[i].y;
+        const Vec2 gradient = 0.5 * Vec2(d.y, -d.x);  // ∂A/∂v_i for the shoelace area
+        const double length = std::sqrt(gradient.x * gradient.x + gradient.y * gradient.y);
+        direction[i] = gradient / std::max(length, shortEdge);
+        rate += length * length / std::max(length, shortEdge);
     }
-    if (gradientNorm2 <= 0.0)
+    if (rate <= 0.0)
         return;
     // a·λ² + b·λ + c = 0; the root nearest zero is the smallest move.
-    const double a = signedArea(gradient);
-    const double b = gradientNorm2;
+    const double a = signedArea(direction);
+    const double b = rate;
     const double c = signedArea(polygon) - targetArea;
     const double disc = b * b - 4.0 * a * c;
     if (disc < 0.0)
@@ -28,7 +31,7 @@ void correctArea(Polygon& polygon, double targetArea)
     // The numerically stable form of the smaller root.
     const double lambda = -2.0 * c / (b + std::sqrt(disc));
     for (std::size_t i = 0; i < n; ++i)
-        polygon[i] += lambda * gradient[i];
+        polygon[i] += lambda * direction[i];
 }
 
 } // namespace vf::sim

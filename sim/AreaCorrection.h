@@ -4,11 +4,17 @@
 
 namespace vf::sim {
 
-// Moves every vertex along the gradient of the polygon's area with respect to that vertex,
-// g_i = ½·J·(v_{i+1} − v_{i−1}) (J a quarter turn), by the same factor λ:  v_i ← v_i + λ·g_i.
-// The area is quadratic in λ, A(λ) = A + λ·Σ|g_i|² + λ²·A(g), so λ is solved for exactly and the
-// contour meets `targetArea` to rounding. The displacement is normal to the contour and scales
-// with the local edge length, so it is a uniform offset of the curve that moves no feature.
-void correctArea(Polygon& polygon, double targetArea);
+// Offsets the contour uniformly along its normals by the distance λ that makes its area `targetArea`:
+// v_i ← v_i + λ·u_i, u_i = g_i / max(|g_i|, shortEdge), g_i = ½·J·(v_{i+1} − v_{i−1}) the gradient of
+// the polygon's area with respect to v_i (J a quarter turn), so u_i is the unit normal but where the
+// neighbours are closer than `shortEdge`. The area is quadratic in λ, A(λ) = A + λ·Σ g_i·u_i +
+// λ²·A(u), so λ is solved for exactly and the contour meets its target to rounding.
+// - A uniform offset is, of all normal moves that make up an area, the one whose largest move is
+//   smallest, and that move is how close other ink may come before the correction crosses it
+//   (moving along g_i itself moves the vertices of long edges most, a hundred times the offset
+//   where spacing varies a hundredfold).
+// - Vertices between edges shorter than `shortEdge` (at a crease, a tip) move in proportion to
+//   their edges instead, so an offset larger than such an edge does not fold it over.
+void correctArea(Polygon& polygon, double targetArea, double shortEdge);
 
 } // namespace vf::sim

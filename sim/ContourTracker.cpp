@@ -409,7 +409,7 @@ bool ContourTracker::refineAll(const ExactMotion& motion, const Flow& flow, doub
         total += c.positions.size();
         if (m_settings.areaCorrection) {
             const PhaseClock::Scope timing(m_clock, Phase::Area);
-            correctArea(c.positions, c.targetArea);
+            correctArea(c.positions, c.targetArea, m_settings.minSpacing());
         }
     }
     m_vertexCount = total;

@@ -5,6 +5,7 @@
 #include "sim/ExactMap.h"
 #include "sim/Flow.h"
 #include "sim/PhaseClock.h"
+#include "sim/Pinches.h"
 #include "sim/ProximityGrid.h"
 #include "sim/Tracking.h"
 
@@ -65,6 +66,7 @@ public:
 
     // Cuts every contour where it pinches (sim/Pinches.h); returns how many cuts were made.
     std::size_t cutPinches();
+    std::size_t separateLayers() { return sim::separateLayers(m_contours); }
 
     // Replaces all contours (snapshot restore); counts are recomputed.
     void setContours(std::vector<Contour> contours);

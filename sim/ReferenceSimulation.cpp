@@ -41,7 +41,10 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
 
 bool ReferenceSimulation::applyMap(const ExactMap& map)
 {
-    return m_tracker.applyMap(map, *m_flow, time());
+    separateLayers();
+    const bool refined = m_tracker.applyMap(map, *m_flow, time());
+    separateLayers();
+    return refined;
 }
 
 bool ReferenceSimulation::pushOutward(Vec2 center, double radius)
@@ -127,6 +130,7 @@ StepReport ReferenceSimulation::step(double dt)
     if (pinchCheckDue(start, time())) {
         const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
         report.pinchesCut = m_tracker.cutPinches();
+        separateLayers();
     }
     return report;
 }

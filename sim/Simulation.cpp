@@ -3,7 +3,9 @@
 #include "sim/ReferenceSimulation.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -102,13 +104,22 @@ int substepCount(double strain, const TrackingSettings& tracking)
 
 DropReport Simulation::drop(Vec2 center, double radius)
 {
-    // A contour around the centre ends up enclosing the new drop too: π r² more, counted as the
-    // drop's own polygon so that the ring it leaves keeps exactly the area it had.
-    const Polygon dropped = circle(center, radius, settings().tracking.maxSpacing);
-    growTargetAreasAround(center, signedArea(dropped));
+    // A contour around the centre ends up enclosing the new drop too: π r² more, what the push adds
+    // to it exactly, so the area correction has no reason to move it (a uniform shrink by the drop
+    // polygon's shortfall would move it onto ink the drop has pressed against its rim). The ring it
+    // shows beside the next drop is then the drop's true area. The drop's polygon lies a hair inside
+    // the rim (the chord tolerance and four single-precision spacings of its coordinates, as a
+    // device keeps them), so that ink the push leaves a hair outside the rim does not start out
+    // crossing its chords; separateLayers then widens that hair.
+    const double inside = settings().tracking.chordTolerance +
+                          4.0 * double(FLT_EPSILON) * (std::max(std::abs(center.x), std::abs(center.y)) + radius);
+    const Polygon dropped = circle(center, std::max(radius - inside, radius / 2.0), settings().tracking.maxSpacing);
+    growTargetAreasAround(center, std::numbers::pi * radius * radius);
+    separateLayers();
     const bool refined = pushOutward(center, radius);
     DropReport report;
     report.region = addRegion({dropped});
+    separateLayers();  // ink a hair from the centre now lies a hair outside the drop's rim
     report.vertexLimitReached = !refined || vertexCount() > settings().tracking.maxVertices;
     return report;
 }

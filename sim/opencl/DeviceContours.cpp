@@ -204,6 +204,8 @@ struct DeviceContours::Impl {
     void putContours(std::size_t firstContour, const std::vector<cl_uint>& offset, const std::vector<cl_uint>& count,
                      const std::vector<double>& areas);
     std::size_t applyCuts(const std::vector<ContourCut>& cuts);
+    struct HostOutlines;
+    HostOutlines readOutlines();
 
     Device& device;
     cl::CommandQueue& queue;
@@ -600,17 +602,18 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
 void DeviceContours::Impl::contourTerms(cl_int mode, Vec2 point, double dropArea)
 {
     const cl_float2 p{{cl_float(point.x), cl_float(point.y)}};
-    launch(queue, contourTermTiles, vertices, mode, p, front.motion, front.contour, contourOffset, contourCount,
+    const auto shortEdge = cl_float(settings.minSpacing());
+    launch(queue, contourTermTiles, vertices, mode, p, shortEdge, front.motion, front.contour, contourOffset, contourCount,
            cl_uint(vertices), tileTotals);
-    launch(queue, contourTermSums, regions.size(), mode, p, Accumulated{dropArea, fp64}, front.motion, contourOffset,
-           contourCount, cl_uint(regions.size()), tileTotals, contourTarget, contourLambda);
+    launch(queue, contourTermSums, regions.size(), mode, p, shortEdge, Accumulated{dropArea, fp64}, front.motion,
+           contourOffset, contourCount, cl_uint(regions.size()), tileTotals, contourTarget, contourLambda);
 }
 
 void DeviceContours::Impl::correctAreas()
 {
     contourTerms(termsArea, Vec2(0.0), 0.0);
-    launch(queue, correctArea, vertices, front.motion, front.contour, contourOffset, contourCount, cl_uint(vertices),
-           contourLambda, motionScratch());
+    launch(queue, correctArea, vertices, cl_float(settings.minSpacing()), front.motion, front.contour, contourOffset,
+           contourCount, cl_uint(vertices), contourLambda, motionScratch());
     std::swap(front.motion, back.motion);
 }
 
@@ -882,27 +885,47 @@ void DeviceContours::write(const std::vector<Contour>& contours)
     });
 }
 
+// The positions, read back for a search on the host (8 bytes a vertex), and each contour's among them.
+struct DeviceContours::Impl::HostOutlines {
+    std::vector<Vec2> positions;
+    std::vector<Outline> outlines;
+};
+
+DeviceContours::Impl::HostOutlines DeviceContours::Impl::readOutlines()
+{
+    HostOutlines host;
+    Outlines s;
+    enqueueOutlines(s);
+    if (s.done())
+        s.done.wait();
+    host.positions.resize(s.positions.size());
+    std::transform(s.positions.begin(), s.positions.end(), host.positions.begin(),
+                   [](const cl_float2& p) { return Vec2(p.s[0], p.s[1]); });
+    for (std::size_t c = 0; c < s.offset.size(); ++c)
+        host.outlines.emplace_back(host.positions.data() + s.offset[c], s.count[c]);
+    return host;
+}
+
 std::size_t DeviceContours::cutPinches()
 {
     return guarded([&] {
-        // The positions come back (8 bytes a vertex) for the search; the cuts are made on the device.
-        const std::vector<ContourCut> cuts = [&] {
-            std::vector<Vec2> positions;
-            std::vector<Outline> outlines;
-            {
-                Outlines s;
-                m->enqueueOutlines(s);
-                if (s.done())
-                    s.done.wait();
-                positions.resize(s.positions.size());
-                std::transform(s.positions.begin(), s.positions.end(), positions.begin(),
-                               [](const cl_float2& p) { return Vec2(p.s[0], p.s[1]); });
-                for (std::size_t c = 0; c < s.offset.size(); ++c)
-                    outlines.emplace_back(positions.data() + s.offset[c], s.count[c]);
-            }
-            return findCuts(outlines);
-        }();
+        // The search is on the host; the cuts are made on the device.
+        const std::vector<ContourCut> cuts = findCuts(m->readOutlines().outlines);
         return cuts.empty() ? 0 : m->applyCuts(cuts);
+    });
+}
+
+std::size_t DeviceContours::separateLayers()
+{
+    return guarded([&] {
+        const std::vector<VertexMove> moves = findSeparations(m->readOutlines().outlines, true);
+        if (moves.empty())
+            return std::size_t(0);
+        // Rare (a layer has thinned to the width since the last look): the contours go round once.
+        std::vector<Contour> contours = read();
+        moveVertices(contours, moves);
+        write(contours);
+        return moves.size();
     });
 }
 

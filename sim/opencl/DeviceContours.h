@@ -53,6 +53,9 @@ public:
     // Contour surgery (sim/Pinches.h) on the host: the contours are read back, and written again
     // when a cut was made. Returns how many cuts were made.
     std::size_t cutPinches();
+    // Layers between two contours widened to the pinch width (sim/Pinches.h), searched on the host
+    // too: the contours are written again when a vertex moved. Returns how many moved.
+    std::size_t separateLayers();
 
     // A tool's exact map (sim/ExactMap.h) as the motion, then refinement, as drop().
     bool applyMap(const ExactMap& map, const FlowBinding& flow);

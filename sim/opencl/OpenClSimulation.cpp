@@ -59,6 +59,14 @@ int OpenClSimulation::addRegion(const std::vector<Polygon>& contours)
     return m_regionCount++;
 }
 
+bool OpenClSimulation::applyMap(const ExactMap& map)
+{
+    separateLayers();
+    const bool refined = m_contours->applyMap(map, binding(m_time, m_time));
+    separateLayers();
+    return refined;
+}
+
 bool OpenClSimulation::pushOutward(Vec2 center, double radius)
 {
     return m_contours->drop(center, radius, binding(m_time, m_time));
@@ -103,6 +111,7 @@ StepReport OpenClSimulation::step(double dt)
     if (pinchCheckDue(start, m_time)) {
         const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
         report.pinchesCut = m_contours->cutPinches();
+        separateLayers();
     }
     return report;
 }

@@ -3,10 +3,10 @@
 // adds the tiles lying wholly inside its range plus its (at most 2·VF_LOCAL) loose vertices at
 // either end. All of it in acc_t (double on fp64 devices), in an order fixed by the indices.
 //
-// Two uses: the optional area correction (sim/AreaCorrection: v_i ← v_i + λ·g_i along the area
-// gradient g_i = ½·J·(v_{i+1} − v_{i−1}), λ in closed form), and the winding numbers that raise
-// the area targets of the contours an ink drop lands in.
-// The mode (host-defined codes): TERMS_AREA sums (2·area term, |g_i|², 2·area term of the gradient
+// Two uses: the optional area correction (sim/AreaCorrection: v_i ← v_i + λ·u_i, u_i = g_i /
+// max(|g_i|, shortEdge), g_i = ½·J·(v_{i+1} − v_{i−1}) the area gradient, λ in closed form), and
+// the winding numbers that raise the area targets of the contours an ink drop lands in.
+// The mode (host-defined codes): TERMS_AREA sums (2·area term, g_i·u_i, 2·area term of the u
 // polygon, 0), TERMS_WINDING (winding contribution of the edge around `point`, 0, 0, 0).
 
 VF_INLINE acc2 wide(float4 m)
@@ -26,7 +26,15 @@ VF_INLINE acc2 areaGradient(acc2 before, acc2 after)
     return (acc_t)0.5 * (acc2)(d.y, -d.x);
 }
 
-VF_INLINE acc4 contourTerms(int mode, float2 point, __global const float4 *motion, uint i, uint first, uint count)
+// How the correction moves a vertex per unit λ: along the unit normal, shorter where the
+// neighbours are closer than `shortEdge` (> 0).
+VF_INLINE acc2 correctionDirection(acc2 gradient, acc_t shortEdge)
+{
+    return gradient / max(sqrt(dot(gradient, gradient)), shortEdge);
+}
+
+VF_INLINE acc4 contourTerms(int mode, float2 point, float shortEdge, __global const float4 *motion, uint i, uint first,
+                            uint count)
 {
     const uint b = nextIn(i, first, count);
     const acc2 p = wide(motion[i]), q = wide(motion[b]);
@@ -41,16 +49,17 @@ VF_INLINE acc4 contourTerms(int mode, float2 point, __global const float4 *motio
             w = -1;
         return (acc4)(w, 0, 0, 0);
     }
-    // Products of floats are exact in double, so the shoelace terms carry no rounding there.
+    // Products of floats are exact in double, so the area's shoelace terms carry no rounding there.
     const acc2 g = areaGradient(wide(motion[previousIn(i, first, count)]), q);
-    const acc2 gNext = areaGradient(p, wide(motion[nextIn(b, first, count)]));
-    return (acc4)(crossWide(p, q), dot(g, g), crossWide(g, gNext), 0);
+    const acc2 u = correctionDirection(g, shortEdge);
+    const acc2 uNext = correctionDirection(areaGradient(p, wide(motion[nextIn(b, first, count)])), shortEdge);
+    return (acc4)(crossWide(p, q), dot(g, u), crossWide(u, uNext), 0);
 }
 
 #define VF_ADD(a, b) ((a) + (b))
 VF_DEFINE_LOCAL_REDUCE(acc4, sumAcc4, VF_ADD)
 
-VF_KERNEL void contourTermTiles(int mode, float2 point, __global const float4 *motion, CONTOUR_ARGS, uint n,
+VF_KERNEL void contourTermTiles(int mode, float2 point, float shortEdge, __global const float4 *motion, CONTOUR_ARGS, uint n,
                                 __global acc4 *tileTotals)
 {
     __local acc4 scratch[VF_SCAN_SCRATCH];
@@ -58,19 +67,19 @@ VF_KERNEL void contourTermTiles(int mode, float2 point, __global const float4 *m
     acc4 terms = 0;
     if (i < n) {
         const uint c = contourOf[i];
-        terms = contourTerms(mode, point, motion, i, contourOffset[c], contourCount[c]);
+        terms = contourTerms(mode, point, shortEdge, motion, i, contourOffset[c], contourCount[c]);
     }
     const acc4 total = VF_LOCAL_REDUCE(sumAcc4)(scratch, terms);
     if (get_local_id(0) == 0)
         tileTotals[get_group_id(0)] = total;
 }
 
-// The λ of AreaCorrection: A(λ) = A + λ·Σ|g|² + λ²·A(g) = target, the root nearest zero.
-VF_INLINE acc_t areaLambda(acc_t area, acc_t gradientNorm2, acc_t gradientArea, acc_t target)
+// The λ of AreaCorrection: A(λ) = A + λ·Σ g·u + λ²·A(u) = target, the root nearest zero.
+VF_INLINE acc_t areaLambda(acc_t area, acc_t rate, acc_t directionArea, acc_t target)
 {
-    if (gradientNorm2 <= 0)
+    if (rate <= 0)
         return 0;
-    const acc_t a = gradientArea, b = gradientNorm2, c = area - target;
+    const acc_t a = directionArea, b = rate, c = area - target;
     const acc_t disc = b * b - 4 * a * c;
     if (disc < 0)
         return 0;
@@ -79,7 +88,7 @@ VF_INLINE acc_t areaLambda(acc_t area, acc_t gradientNorm2, acc_t gradientArea, 
 
 // Per contour: in TERMS_AREA mode the area correction's λ, in TERMS_WINDING mode the target area
 // grows by winding number × `dropArea`.
-VF_KERNEL void contourTermSums(int mode, float2 point, acc_t dropArea, __global const float4 *motion,
+VF_KERNEL void contourTermSums(int mode, float2 point, float shortEdge, acc_t dropArea, __global const float4 *motion,
                                __global const uint *contourOffset, __global const uint *contourCount, uint contours,
                                __global const acc4 *tileTotals, __global acc_t *targetArea, __global acc_t *lambda)
 {
@@ -91,14 +100,14 @@ VF_KERNEL void contourTermSums(int mode, float2 point, acc_t dropArea, __global 
     acc4 sum = 0;
     if (wholeFrom < wholeTo) {
         for (uint i = first; i < wholeFrom * VF_LOCAL; ++i)
-            sum += contourTerms(mode, point, motion, i, first, count);
+            sum += contourTerms(mode, point, shortEdge, motion, i, first, count);
         for (uint t = wholeFrom; t < wholeTo; ++t)
             sum += tileTotals[t];
         for (uint i = wholeTo * VF_LOCAL; i < end; ++i)
-            sum += contourTerms(mode, point, motion, i, first, count);
+            sum += contourTerms(mode, point, shortEdge, motion, i, first, count);
     } else {
         for (uint i = first; i < end; ++i)
-            sum += contourTerms(mode, point, motion, i, first, count);
+            sum += contourTerms(mode, point, shortEdge, motion, i, first, count);
     }
     if (mode == TERMS_WINDING)
         targetArea[c] += sum.x * dropArea;
@@ -106,7 +115,7 @@ VF_KERNEL void contourTermSums(int mode, float2 point, acc_t dropArea, __global 
         lambda[c] = count < 3 ? 0 : areaLambda((acc_t)0.5 * sum.x, sum.y, (acc_t)0.5 * sum.z, targetArea[c]);
 }
 
-VF_KERNEL void correctArea(__global const float4 *motion, CONTOUR_ARGS, uint n, __global const acc_t *lambda,
+VF_KERNEL void correctArea(float shortEdge, __global const float4 *motion, CONTOUR_ARGS, uint n, __global const acc_t *lambda,
                            __global float4 *corrected)
 {
     const uint i = get_global_id(0);
@@ -115,6 +124,6 @@ VF_KERNEL void correctArea(__global const float4 *motion, CONTOUR_ARGS, uint n, 
     const uint c = contourOf[i], first = contourOffset[c], count = contourCount[c];
     const float4 m = motion[i];
     const acc2 g = areaGradient(wide(motion[previousIn(i, first, count)]), wide(motion[nextIn(i, first, count)]));
-    const acc2 p = wide(m) + lambda[c] * g;
+    const acc2 p = wide(m) + lambda[c] * correctionDirection(g, shortEdge);
     corrected[i] = (float4)((float)p.x, (float)p.y, m.zw);
 }

@@ -1,12 +1,16 @@
 // Contour surgery (sim/Pinches): a layer of ink thinner than positions resolve is cut, one that
-// they resolve is left alone, and the cut contours stay simple and keep their ink.
+// they resolve is left alone, and the cut contours stay simple and keep their ink; a layer between
+// two contours that thin is widened instead.
 #include "Backends.h"
 #include "sim/Crossings.h"
 #include "sim/Pinches.h"
 
+#include <glm/geometric.hpp>
+
 #include <QTest>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 using namespace vf;
@@ -63,6 +67,23 @@ std::size_t crossings(const std::vector<Contour>& contours)
     for (const Contour& c : contours)
         polygons.push_back(&c.positions);
     return sim::countCrossings(polygons);
+}
+
+// The least distance from a vertex of one of the contours to an edge of the other.
+double gapBetween(const Polygon& a, const Polygon& b)
+{
+    double gap = INFINITY;
+    for (const auto& [from, to] : {std::pair{&a, &b}, std::pair{&b, &a}})
+        for (Vec2 p : *from)
+            for (std::size_t j = 0; j < to->size(); ++j)
+                gap = std::min(gap, std::sqrt(sim::squaredDistanceToSegment(p, (*to)[j], (*to)[(j + 1) % to->size()])));
+    return gap;
+}
+
+// The pinch width where the largest coordinate is `largest`.
+double pinchWidth(double largest)
+{
+    return sim::pinchSpacings * double(FLT_EPSILON) * largest;
 }
 
 } // namespace
@@ -122,6 +143,49 @@ private slots:
         const std::vector<Contour> before = contours;
         QCOMPARE(sim::cutPinches(contours), std::size_t(0));
         QVERIFY(contours == before);
+    }
+
+    // Two inks a hair apart: each side moves off the other by what the width asks, no farther, and
+    // a layer positions resolve is left as it is.
+    void twoContourLayerIsWidened()
+    {
+        const Polygon below = outline({{0.1, 0.7}, {0.5, 0.7}, {0.5, 0.8}, {0.1, 0.8}});
+        const Polygon above = outline({{0.1, 0.8 + 1e-7}, {0.5, 0.8 + 1e-7}, {0.5, 0.9}, {0.1, 0.9}});
+        std::vector<Contour> contours{tracked(below, 0), tracked(above, 1)};
+        const std::size_t touching = std::count_if(above.begin(), above.end(), [](Vec2 p) { return p.y < 0.81; });
+        QCOMPARE(sim::separateLayers(contours), 2 * touching);
+        const double width = pinchWidth(0.9);
+        QVERIFY2(gapBetween(contours[0].positions, contours[1].positions) >= width,
+                 qPrintable(QString::number(gapBetween(contours[0].positions, contours[1].positions))));
+        QCOMPARE(crossings(contours), std::size_t(0));
+        for (const auto& [moved, original] : {std::pair{&contours[0], &below}, std::pair{&contours[1], &above}})
+            for (std::size_t i = 0; i < original->size(); ++i)
+                QVERIFY(glm::distance(moved->positions[i], (*original)[i]) <= width);
+
+        std::vector<Contour> apart{tracked(below, 0), tracked(outline({{0.1, 0.8001}, {0.5, 0.8001}, {0.5, 0.9}, {0.1, 0.9}}), 1)};
+        const std::vector<Contour> before = apart;
+        QCOMPARE(sim::separateLayers(apart), std::size_t(0));
+        QVERIFY(apart == before);
+    }
+
+    // A drop landing 1e-4 from ink's edge pushes it to about 1e-7 outside its rim (ρ²/2r); both
+    // backends leave the width between them instead, with no crossing.
+    void dropBesideInkLeavesTheWidth_data() { test::addBackendRows(); }
+    void dropBesideInkLeavesTheWidth()
+    {
+        QFETCH(QString, backend);
+        VF_REQUIRE_BACKEND(backend);
+        sim::SimulationSettings settings;
+        settings.flow = sim::SimulationSettings::FlowType::Analytic;
+        settings.tracking.maxSpacing = 0.004;
+        auto simulation = test::makeBackend(backend, settings);
+        simulation->addRegion({sim::resample({{0.3, 0.2}, {0.7, 0.2}, {0.7, 0.5 - 1e-4}, {0.3, 0.5 - 1e-4}}, 0.004)});
+        simulation->drop({0.5, 0.5}, 0.05);
+        const std::vector<Contour> contours = simulation->contours();
+        QCOMPARE(contours.size(), std::size_t(2));
+        QCOMPARE(crossings(contours), std::size_t(0));
+        const double gap = gapBetween(contours[0].positions, contours[1].positions);
+        QVERIFY2(gap >= 0.99 * pinchWidth(0.55), qPrintable(QString::number(gap)));
     }
 
     void checksComeOnceAPeriod()

@@ -3,6 +3,7 @@
 #include "Flows.h"
 
 #include "sim/AnalyticFlow.h"
+#include "sim/AreaCorrection.h"
 #include "sim/ContourTracker.h"
 #include "sim/Crossings.h"
 
@@ -93,6 +94,8 @@ private slots:
 
     void adaptiveSpacingSavesVertices_data();
     void adaptiveSpacingSavesVertices();
+
+    void areaCorrectionIsAUniformOffset();
 
     void thinNeedlesAreTrimmed_data();
     void thinNeedlesAreTrimmed();
@@ -275,6 +278,33 @@ void TestTracking::adaptiveSpacingSavesVertices()
     QVERIFY2(adaptiveError <= uniformError, "adaptive spacing lost accuracy against uniform spacing");
     QVERIFY2(adaptive.size() <= 0.6 * uniform.size(),
              qPrintable(QStringLiteral("%1 adaptive vs %2 uniform vertices").arg(adaptive.size()).arg(uniform.size())));
+}
+
+// The correction offsets a contour by one distance everywhere, whether its edges are fine or coarse
+// (how far a vertex moves is how close other ink may come), and moves a vertex between edges far
+// shorter than the offset by less than those edges (no fold at a crease).
+void TestTracking::areaCorrectionIsAUniformOffset()
+{
+    const Vec2 centre(0.5, 0.5);
+    constexpr double radius = 0.1, shortEdge = 2.5e-4;
+    auto on = [&](double angle) { return centre + radius * Vec2(std::cos(angle), std::sin(angle)); };
+    Polygon circle;
+    for (double a = 0.0; a < std::numbers::pi; a += 0.01)  // edges of 1e-3
+        circle.push_back(on(a));
+    for (double a = std::numbers::pi; a < 2.0 * std::numbers::pi - 0.05; a += 0.1)  // edges of 1e-2
+        circle.push_back(on(a));
+    const std::size_t cluster = 50;  // three vertices 1e-8 apart, as at a crease
+    circle.insert(circle.begin() + cluster + 1, {on(0.5 + 1e-7), on(0.5 + 2e-7)});
+    Polygon corrected = circle;
+    const double target = sim::signedArea(circle) + 2.0 * std::numbers::pi * radius * 1e-6;
+    sim::correctArea(corrected, target, shortEdge);
+    QVERIFY(std::abs(sim::signedArea(corrected) - target) < 1e-15);
+    const double fine = glm::distance(corrected[10], circle[10]), coarse = glm::distance(corrected.back(), circle.back());
+    QVERIFY2(std::abs(fine / coarse - 1.0) < 1e-6, qPrintable(QStringLiteral("fine %1, coarse %2").arg(fine).arg(coarse)));
+    QVERIFY(std::abs(coarse - 1e-6) < 1e-8);
+    for (std::size_t i = 0; i < circle.size(); ++i)
+        QVERIFY(glm::distance(corrected[i], circle[i]) <= coarse * (1.0 + 1e-9));
+    QVERIFY(glm::distance(corrected[cluster + 1], circle[cluster + 1]) < 0.1 * glm::distance(circle[cluster + 1], circle[cluster]));
 }
 
 void TestTracking::thinNeedlesAreTrimmed_data()
