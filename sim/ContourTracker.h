@@ -6,6 +6,7 @@
 #include "sim/Flow.h"
 #include "sim/PhaseClock.h"
 #include "sim/Pinches.h"
+#include "sim/Separation.h"
 #include "sim/ProximityGrid.h"
 #include "sim/Tracking.h"
 

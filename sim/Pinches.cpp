@@ -1,6 +1,7 @@
 #include "sim/Pinches.h"
 
 #include "sim/Crossings.h"
+#include "sim/EdgeGrid.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -16,100 +17,6 @@ namespace vf::sim {
 
 namespace {
 
-// The vertex after i on a ring of n (no division: this runs for every vertex and edge).
-std::size_t after(std::size_t i, std::size_t n)
-{
-    return i + 1 == n ? 0 : i + 1;
-}
-
-// Every edge of every contour in the cells its box, widened by its contour's pinch width, overlaps:
-// the edges of a contour within that width of a point are among those of the point's cell.
-// Counting sort, as ProximityGrid.
-class EdgeGrid {
-public:
-    struct Edge {
-        std::uint32_t contour, from;  // from vertex `from` to the next
-    };
-
-    EdgeGrid(const std::vector<Outline>& contours, const std::vector<double>& widths) : m_widths(widths)
-    {
-        Vec2 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
-        double edgeLength = 0.0;
-        std::size_t edges = 0;
-        for (const Outline& c : contours) {
-            for (std::size_t i = 0; i < c.size(); ++i) {
-                low = glm::min(low, c[i]);
-                high = glm::max(high, c[i]);
-                edgeLength += glm::distance(c[i], c[after(i, c.size())]);
-            }
-            edges += c.size();
-        }
-        if (edges == 0)
-            return;
-        // Cells about twice the mean edge long, at most 1024 across the extent.
-        const Vec2 extent = high - low;
-        const double widest = *std::max_element(widths.begin(), widths.end());
-        m_cell = std::max({2.0 * edgeLength / double(edges), std::max(extent.x, extent.y) / 1024.0,
-                           std::numeric_limits<double>::min()});
-        m_origin = low - Vec2(widest);
-        m_columns = int(extent.x / m_cell) + 2;
-        m_rows = int(extent.y / m_cell) + 2;
-        m_start.assign(std::size_t(m_columns) * std::size_t(m_rows) + 1, 0);
-        forEveryEdgeCell(contours, [this](std::size_t cell, Edge) { ++m_start[cell + 1]; });
-        for (std::size_t k = 1; k < m_start.size(); ++k)
-            m_start[k] += m_start[k - 1];
-        m_entries.resize(m_start.back());
-        std::vector<std::uint32_t> fill(m_start.begin(), m_start.end() - 1);
-        forEveryEdgeCell(contours, [&](std::size_t cell, Edge e) { m_entries[fill[cell]++] = e; });
-    }
-
-    // f(edge) for every edge whose widened box overlaps the box of a and b.
-    template <class F>
-    void forEdgesNear(Vec2 a, Vec2 b, F f) const
-    {
-        if (m_entries.empty())
-            return;
-        const auto [c0, r0] = cellOf(glm::min(a, b));
-        const auto [c1, r1] = cellOf(glm::max(a, b));
-        for (int r = r0; r <= r1; ++r)
-            for (int c = c0; c <= c1; ++c) {
-                const std::size_t cell = std::size_t(r) * std::size_t(m_columns) + std::size_t(c);
-                for (std::uint32_t k = m_start[cell]; k < m_start[cell + 1]; ++k)
-                    f(m_entries[k]);
-            }
-    }
-
-private:
-    std::pair<int, int> cellOf(Vec2 p) const
-    {
-        const Vec2 q = (p - m_origin) / m_cell;
-        return {std::clamp(int(q.x), 0, m_columns - 1), std::clamp(int(q.y), 0, m_rows - 1)};
-    }
-
-    template <class F>
-    void forEveryEdgeCell(const std::vector<Outline>& contours, F f) const
-    {
-        for (std::size_t k = 0; k < contours.size(); ++k) {
-            const Outline& p = contours[k];
-            for (std::size_t i = 0; i < p.size(); ++i) {
-                const Vec2 a = p[i], b = p[after(i, p.size())];
-                const auto [c0, r0] = cellOf(glm::min(a, b) - Vec2(m_widths[k]));
-                const auto [c1, r1] = cellOf(glm::max(a, b) + Vec2(m_widths[k]));
-                for (int r = r0; r <= r1; ++r)
-                    for (int c = c0; c <= c1; ++c)
-                        f(std::size_t(r) * std::size_t(m_columns) + std::size_t(c),
-                          Edge{std::uint32_t(k), std::uint32_t(i)});
-            }
-        }
-    }
-
-    const std::vector<double>& m_widths;
-    double m_cell = 1.0;
-    Vec2 m_origin{0.0};
-    int m_columns = 0, m_rows = 0;
-    std::vector<std::uint32_t> m_start;
-    std::vector<Edge> m_entries;
-};
 
 // Vertex `vertex` of a contour within the pinch width of its edge from `edge`; smallerLoop counts
 // the vertices of the smaller of the loops a cut there makes.
@@ -247,7 +154,8 @@ std::vector<Pinch> pinchesOf(const std::vector<Outline>& contours, const EdgeGri
     return pinches;
 }
 
-// Each contour's pinch width: pinchSpacings single-precision spacings of its largest coordinate.
+} // namespace
+
 std::vector<double> pinchWidths(const std::vector<Outline>& contours)
 {
     std::vector<double> widths;
@@ -260,98 +168,6 @@ std::vector<double> pinchWidths(const std::vector<Outline>& contours)
     return widths;
 }
 
-// Segments a–b and c–d cross or touch (collinear ones where they overlap): what a moved vertex's
-// edges must not do.
-bool meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d)
-{
-    const int abc = orientation(a, b, c), abd = orientation(a, b, d);
-    if (abc == 0 && abd == 0)
-        return std::max(std::min(a.x, b.x), std::min(c.x, d.x)) <= std::min(std::max(a.x, b.x), std::max(c.x, d.x)) &&
-               std::max(std::min(a.y, b.y), std::min(c.y, d.y)) <= std::min(std::max(a.y, b.y), std::max(c.y, d.y));
-    return abc * abd <= 0 && orientation(c, d, a) * orientation(c, d, b) <= 0;
-}
-
-// Where vertex i of contour k goes to stand at least the pinch width off every other contour near
-// it: pushed straight away from each such contour's nearest edge by what it lacks (one push per
-// contour, however many of its short edges lie within reach), the sum at most one width long.
-// Itself where nothing is that near, or where it lies on another contour (which side it belongs on
-// is then unknown).
-Vec2 separated(const std::vector<Outline>& contours, const EdgeGrid& grid, const std::vector<double>& widths,
-               std::size_t k, std::size_t i)
-{
-    struct Nearest {
-        std::uint32_t contour;
-        double distance;
-        Vec2 from;  // the nearest point of that contour
-        double width;
-    };
-    std::vector<Nearest> near;
-    const Vec2 p = contours[k][i];
-    grid.forEdgesNear(p, p, [&](EdgeGrid::Edge e) {
-        if (e.contour == k)
-            return;
-        const Outline& other = contours[e.contour];
-        const Vec2 a = other[e.from], b = other[after(e.from, other.size())];
-        const double width = std::max(widths[k], widths[e.contour]);
-        if (p.x < std::min(a.x, b.x) - width || p.x > std::max(a.x, b.x) + width ||
-            p.y < std::min(a.y, b.y) - width || p.y > std::max(a.y, b.y) + width)
-            return;
-        const Vec2 ab = b - a;
-        const double length2 = glm::dot(ab, ab);
-        const Vec2 nearest = a + (length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0) * ab;
-        const double distance = glm::distance(p, nearest);
-        if (distance >= width)
-            return;
-        const auto same = std::find_if(near.begin(), near.end(), [&](const Nearest& n) { return n.contour == e.contour; });
-        if (same == near.end())
-            near.push_back({e.contour, distance, nearest, width});
-        else if (distance < same->distance)
-            *same = {e.contour, distance, nearest, width};
-    });
-    Vec2 push(0.0);
-    double widest = 0.0;
-    for (const Nearest& n : near) {
-        if (n.distance == 0.0)
-            return p;
-        push += (n.width - n.distance) / n.distance * (p - n.from);
-        widest = std::max(widest, n.width);
-    }
-    const double length = glm::length(push);
-    return length > widest ? p + widest / length * push : p + push;
-}
-
-// A position as it will be kept: on a device, in single precision, which is then what is checked.
-Vec2 stored(Vec2 p, bool singlePrecision)
-{
-    return singlePrecision ? Vec2(float(p.x), float(p.y)) : p;
-}
-
-// Whether vertex i of contour k may move to `to`: its two edges, so moved, meet no edge of any
-// contour but their own neighbours (at the vertex they share). `positions` holds the contours as
-// moved so far; no vertex has moved farther than its contour's width, which the grid's boxes allow.
-bool moveIsClean(const std::vector<std::vector<Vec2>>& positions, const EdgeGrid& grid, std::size_t k,
-                 std::size_t i, Vec2 to)
-{
-    const std::vector<Vec2>& q = positions[k];
-    const std::size_t n = q.size(), before = (i + n - 1) % n, next = after(i, n);
-    for (const auto& edge : {std::pair{before, i}, std::pair{i, next}}) {
-        const std::size_t from = edge.first, end = edge.second;  // named, not bound: clang 14 cannot capture bindings
-        const Vec2 a = from == i ? to : q[from], b = end == i ? to : q[end];
-        bool clean = true;
-        grid.forEdgesNear(a, b, [&](EdgeGrid::Edge e) {
-            const std::vector<Vec2>& other = positions[e.contour];
-            const std::size_t j = e.from, jNext = after(j, other.size());
-            if (e.contour == k && (j == from || j == end || jNext == from || jNext == end))
-                return;  // the edge itself, its neighbour (they share a vertex) or the vertex's other edge
-            clean = clean && !meet(a, b, other[j], other[jNext]);
-        });
-        if (!clean)
-            return false;
-    }
-    return true;
-}
-
-} // namespace
 
 bool pinchCheckDue(double t0, double t1)
 {
@@ -440,59 +256,5 @@ std::size_t cutPinches(std::vector<Contour>& contours)
     return made;
 }
 
-std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bool singlePrecision)
-{
-    std::vector<VertexMove> moves;
-    if (contours.empty())
-        return moves;
-    const std::vector<double> widths = pinchWidths(contours);
-    // Boxes twice as wide: an edge whose ends have moved (a width at most) is still found.
-    std::vector<double> reach(widths.size());
-    std::transform(widths.begin(), widths.end(), reach.begin(), [](double w) { return 2.0 * w; });
-    const EdgeGrid grid(contours, reach);
-    // Where each vertex would go, from the positions before any move; then, in turn, the moves that
-    // stay clean of the contours as moved so far.
-    std::vector<VertexMove> wanted;
-    for (std::size_t k = 0; k < contours.size(); ++k)
-        for (std::size_t i = 0; i < contours[k].size(); ++i)
-            if (const Vec2 to = stored(separated(contours, grid, widths, k, i), singlePrecision); to != contours[k][i])
-                wanted.push_back({std::uint32_t(k), std::uint32_t(i), to});
-    if (wanted.empty())
-        return moves;
-    std::vector<std::vector<Vec2>> moved;
-    moved.reserve(contours.size());
-    for (const Outline& c : contours)
-        moved.emplace_back(c.begin(), c.end());
-    for (const VertexMove& m : wanted)
-        if (moveIsClean(moved, grid, m.contour, m.vertex, m.to)) {
-            moved[m.contour][m.vertex] = m.to;
-            moves.push_back(m);
-        }
-    return moves;
-}
-
-void moveVertices(std::vector<Contour>& contours, const std::vector<VertexMove>& moves)
-{
-    for (const VertexMove& m : moves) {
-        Contour& c = contours[m.contour];
-        const std::size_t n = c.positions.size();
-        // The shoelace area changes by ½·d × (v_{i+1} − v_{i−1}) when v_i alone moves by d.
-        const Vec2 d = m.to - c.positions[m.vertex];
-        const Vec2 across = c.positions[after(m.vertex, n)] - c.positions[(m.vertex + n - 1) % n];
-        c.targetArea += 0.5 * (d.x * across.y - d.y * across.x);
-        c.positions[m.vertex] = m.to;
-    }
-}
-
-std::size_t separateLayers(std::vector<Contour>& contours)
-{
-    std::vector<Outline> outlines;
-    outlines.reserve(contours.size());
-    for (const Contour& c : contours)
-        outlines.emplace_back(c.positions);
-    const std::vector<VertexMove> moves = findSeparations(outlines);
-    moveVertices(contours, moves);
-    return moves.size();
-}
 
 } // namespace vf::sim

@@ -4,6 +4,7 @@
 // once its two sides come within a few single-precision spacings of each other, rounding alone can
 // make them cross. Such a layer is far thinner than anything a picture shows, so it is cut there
 // instead: the contour is split into two loops at the pinch, and a loop too thin to show is dropped.
+#include "sim/EdgeGrid.h"
 #include "sim/Tracking.h"
 
 #include <cstddef>
@@ -27,7 +28,8 @@ inline constexpr double pinchCheckPeriod = 0.1;
 // snapshot checks where the original run did).
 bool pinchCheckDue(double t0, double t1);
 
-using Outline = std::span<const Vec2>;
+// Each contour's pinch width: pinchSpacings single-precision spacings of its largest coordinate.
+std::vector<double> pinchWidths(const std::vector<Outline>& contours);
 
 // One contour's loops after its cuts: the indices of their vertices, in order, and their areas.
 struct Loop {
@@ -56,23 +58,5 @@ std::vector<double> sharedTargets(double target, const std::vector<Loop>& kept);
 // findCuts on `contours`, each cut contour replaced by its kept loops, which keep their vertices'
 // previous positions and spacing. Returns how many cuts were made.
 std::size_t cutPinches(std::vector<Contour>& contours);
-
-// Layers between two contours: where a vertex comes within the pinch width of an edge of another
-// contour, it is moved straight away from that edge to the width (at most one width in all), if its
-// two edges, so moved, meet no other edge (exact predicates). Such a layer cannot be cut (its two
-// sides bound different regions), and left thinner than positions resolve, a later push presses
-// it until its sides cross; at the width it is still far thinner than a picture shows.
-struct VertexMove {
-    std::uint32_t contour = 0, vertex = 0;
-    Vec2 to{0.0};
-};
-// With `singlePrecision` the moves are to positions a float holds (a device's), checked as such.
-std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bool singlePrecision = false);
-// The moves made, in order, each contour's area target following its area: the ink pressed out of
-// a layer thinner than the width is given up, so the area correction does not move the contour
-// back (it would move all of it, toward other ink too).
-void moveVertices(std::vector<Contour>& contours, const std::vector<VertexMove>& moves);
-// findSeparations on `contours`, the moves made by moveVertices. Returns how many vertices moved.
-std::size_t separateLayers(std::vector<Contour>& contours);
 
 } // namespace vf::sim

@@ -42,9 +42,13 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
 bool ReferenceSimulation::applyMap(const ExactMap& map)
 {
     separateLayers();
-    const bool refined = m_tracker.applyMap(map, *m_flow, time());
-    separateLayers();
-    return refined;
+    return m_tracker.applyMap(map, *m_flow, time());
+}
+
+void ReferenceSimulation::separateLayers()
+{
+    const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
+    m_tracker.separateLayers();
 }
 
 bool ReferenceSimulation::pushOutward(Vec2 center, double radius)
@@ -128,8 +132,10 @@ StepReport ReferenceSimulation::step(double dt)
     }
     m_pendingStylus.clear();
     if (pinchCheckDue(start, time())) {
-        const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
-        report.pinchesCut = m_tracker.cutPinches();
+        {
+            const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
+            report.pinchesCut = m_tracker.cutPinches();
+        }
         separateLayers();
     }
     return report;

@@ -38,7 +38,7 @@ public:
 protected:
     void growTargetAreasAround(Vec2 p, double area) override { m_tracker.growTargetAreasAround(p, area); }
     bool pushOutward(Vec2 center, double radius) override;
-    std::size_t separateLayers() override { return m_tracker.separateLayers(); }
+    void separateLayers() override;
 
 private:
     SimulationSettings m_settings;

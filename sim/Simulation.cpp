@@ -119,7 +119,7 @@ DropReport Simulation::drop(Vec2 center, double radius)
     const bool refined = pushOutward(center, radius);
     DropReport report;
     report.region = addRegion({dropped});
-    separateLayers();  // ink a hair from the centre now lies a hair outside the drop's rim
+    separateLayers();
     report.vertexLimitReached = !refined || vertexCount() > settings().tracking.maxVertices;
     return report;
 }

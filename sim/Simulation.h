@@ -132,10 +132,10 @@ protected:
     // when refinement stopped at max_vertices).
     virtual void growTargetAreasAround(Vec2 p, double area) = 0;
     virtual bool pushOutward(Vec2 center, double radius) = 0;
-    // Layers between two contours widened to the pinch width (sim/Pinches.h): before a drop or a
-    // map presses them, after a drop lands against ink, and at the steps' pinch checks. Returns
-    // how many vertices moved.
-    virtual std::size_t separateLayers() = 0;
+    // Layers between two contours widened to the pinch width (sim/Separation.h): before every drop
+    // and exact map (they press layers) and after every drop (it leaves ink a hair from its centre
+    // a hair outside its rim), as the steps do at their pinch checks.
+    virtual void separateLayers() = 0;
 };
 
 // Throws std::invalid_argument with a one-line message for settings no backend can run.

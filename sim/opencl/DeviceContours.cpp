@@ -1,15 +1,16 @@
 // The contour tracker of sim/ContourTracker.cpp on an OpenCL device: the host side of one step
 // (advect, spacing, proximity grid, refinement by stream compaction, area correction, the cuts of
-// contour surgery) and the transfers in and out. One file because every phase works on the same device buffers, held in
+// contour surgery, the widening of layers) and the transfers in and out. One file because every phase works on the same device buffers, held in
 // Impl, and its launches must agree with them; the kernels are in contours*.cl, split by phase.
 // The seam for a split is the read-back half (snapshots, outlines, staging, requests, from
 // enqueueSnapshot on): it only reads the vertex buffers (through the motion scratch), and would
 // move out with Impl's declaration in a private header shared by both files; contour surgery
-// (cutPinches, applyCuts) could follow it, as it reads the positions back the same way.
+// (cutPinches, applyCuts, separateLayers) could follow it, as it reads the positions back the same way.
 #include "sim/opencl/DeviceContours.h"
 
 #include "sim/ContourTracker.h"
 #include "sim/Pinches.h"
+#include "sim/Separation.h"
 #include "sim/SpacingField.h"
 
 #include "sim/opencl/ContourCodes.h"
@@ -206,6 +207,7 @@ struct DeviceContours::Impl {
     std::size_t applyCuts(const std::vector<ContourCut>& cuts);
     struct HostOutlines;
     HostOutlines readOutlines();
+    void moveVertices(HostOutlines& host, const std::vector<VertexMove>& moves);
 
     Device& device;
     cl::CommandQueue& queue;
@@ -891,6 +893,31 @@ struct DeviceContours::Impl::HostOutlines {
     std::vector<Outline> outlines;
 };
 
+// The widening's moves, made where the positions lie (and on the host's copy, which the area
+// changes are measured on), and the contours' targets following their areas (sim::moveVertices).
+// A vertex's previous position goes with it: the next motion starts from there.
+void DeviceContours::Impl::moveVertices(HostOutlines& host, const std::vector<VertexMove>& moves)
+{
+    std::vector<cl_float4> moved;
+    moved.reserve(moves.size());
+    for (const VertexMove& move : moves) {
+        const Outline& c = host.outlines[move.contour];
+        const std::size_t first = std::size_t(c.data() - host.positions.data());
+        targets[move.contour] += moveVertex({host.positions.data() + first, c.size()}, move.vertex, move.to);
+        const auto x = cl_float(move.to.x), y = cl_float(move.to.y);
+        moved.push_back({{x, y, x, y}});
+        queue.enqueueWriteBuffer(front.motion, CL_FALSE, (first + move.vertex) * sizeof(cl_float4), sizeof(cl_float4),
+                                 &moved.back());
+    }
+    if (fp64) {
+        put(queue, contourTarget, 0, targets);
+    } else {
+        const std::vector<float> targetFloats(targets.begin(), targets.end());
+        put(queue, contourTarget, 0, targetFloats);
+    }
+    queue.finish();  // before `moved` and the float targets go
+}
+
 DeviceContours::Impl::HostOutlines DeviceContours::Impl::readOutlines()
 {
     HostOutlines host;
@@ -918,13 +945,10 @@ std::size_t DeviceContours::cutPinches()
 std::size_t DeviceContours::separateLayers()
 {
     return guarded([&] {
-        const std::vector<VertexMove> moves = findSeparations(m->readOutlines().outlines, true);
-        if (moves.empty())
-            return std::size_t(0);
-        // Rare (a layer has thinned to the width since the last look): the contours go round once.
-        std::vector<Contour> contours = read();
-        moveVertices(contours, moves);
-        write(contours);
+        Impl::HostOutlines host = m->readOutlines();
+        const std::vector<VertexMove> moves = findSeparations(host.outlines, true);
+        if (!moves.empty())
+            m->moveVertices(host, moves);
         return moves.size();
     });
 }

@@ -62,9 +62,13 @@ int OpenClSimulation::addRegion(const std::vector<Polygon>& contours)
 bool OpenClSimulation::applyMap(const ExactMap& map)
 {
     separateLayers();
-    const bool refined = m_contours->applyMap(map, binding(m_time, m_time));
-    separateLayers();
-    return refined;
+    return m_contours->applyMap(map, binding(m_time, m_time));
+}
+
+void OpenClSimulation::separateLayers()
+{
+    const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
+    m_contours->separateLayers();
 }
 
 bool OpenClSimulation::pushOutward(Vec2 center, double radius)
@@ -109,8 +113,10 @@ StepReport OpenClSimulation::step(double dt)
     }
     m_pendingStylus.clear();
     if (pinchCheckDue(start, m_time)) {
-        const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
-        report.pinchesCut = m_contours->cutPinches();
+        {
+            const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
+            report.pinchesCut = m_contours->cutPinches();
+        }
         separateLayers();
     }
     return report;

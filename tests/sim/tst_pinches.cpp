@@ -4,6 +4,7 @@
 #include "Backends.h"
 #include "sim/Crossings.h"
 #include "sim/Pinches.h"
+#include "sim/Separation.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,0 +1,115 @@
+#pragma once
+// Every edge of a set of contours in a uniform grid, for the searches of sim/Pinches and
+// sim/Separation: which edges lie near a point or a segment. Counting sort, as ProximityGrid.
+#include "sim/Geometry.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace vf::sim {
+
+using Outline = std::span<const Vec2>;
+
+// The vertex after i on a ring of n (no division: this runs for every vertex and edge).
+inline std::size_t after(std::size_t i, std::size_t n)
+{
+    return i + 1 == n ? 0 : i + 1;
+}
+
+// Every edge of every contour in the cells its box, widened by its contour's pinch width, overlaps:
+// the edges of a contour within that width of a point are among those of the point's cell.
+// Counting sort, as ProximityGrid.
+class EdgeGrid {
+public:
+    struct Edge {
+        std::uint32_t contour, from;  // from vertex `from` to the next
+    };
+
+    EdgeGrid(const std::vector<Outline>& contours, const std::vector<double>& widths) : m_widths(widths)
+    {
+        Vec2 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
+        double edgeLength = 0.0;
+        std::size_t edges = 0;
+        for (const Outline& c : contours) {
+            for (std::size_t i = 0; i < c.size(); ++i) {
+                low = glm::min(low, c[i]);
+                high = glm::max(high, c[i]);
+                edgeLength += glm::distance(c[i], c[after(i, c.size())]);
+            }
+            edges += c.size();
+        }
+        if (edges == 0)
+            return;
+        // Cells about twice the mean edge long, at most 1024 across the extent.
+        const Vec2 extent = high - low;
+        const double widest = *std::max_element(widths.begin(), widths.end());
+        m_cell = std::max({2.0 * edgeLength / double(edges), std::max(extent.x, extent.y) / 1024.0,
+                           std::numeric_limits<double>::min()});
+        m_origin = low - Vec2(widest);
+        m_columns = int(extent.x / m_cell) + 2;
+        m_rows = int(extent.y / m_cell) + 2;
+        m_start.assign(std::size_t(m_columns) * std::size_t(m_rows) + 1, 0);
+        forEveryEdgeCell(contours, [this](std::size_t cell, Edge) { ++m_start[cell + 1]; });
+        for (std::size_t k = 1; k < m_start.size(); ++k)
+            m_start[k] += m_start[k - 1];
+        m_entries.resize(m_start.back());
+        std::vector<std::uint32_t> fill(m_start.begin(), m_start.end() - 1);
+        forEveryEdgeCell(contours, [&](std::size_t cell, Edge e) { m_entries[fill[cell]++] = e; });
+    }
+
+    // f(edge) for every edge whose widened box overlaps the box of a and b.
+    template <class F>
+    void forEdgesNear(Vec2 a, Vec2 b, F f) const
+    {
+        if (m_entries.empty())
+            return;
+        const auto [c0, r0] = cellOf(glm::min(a, b));
+        const auto [c1, r1] = cellOf(glm::max(a, b));
+        for (int r = r0; r <= r1; ++r)
+            for (int c = c0; c <= c1; ++c) {
+                const std::size_t cell = std::size_t(r) * std::size_t(m_columns) + std::size_t(c);
+                for (std::uint32_t k = m_start[cell]; k < m_start[cell + 1]; ++k)
+                    f(m_entries[k]);
+            }
+    }
+
+private:
+    std::pair<int, int> cellOf(Vec2 p) const
+    {
+        const Vec2 q = (p - m_origin) / m_cell;
+        return {std::clamp(int(q.x), 0, m_columns - 1), std::clamp(int(q.y), 0, m_rows - 1)};
+    }
+
+    template <class F>
+    void forEveryEdgeCell(const std::vector<Outline>& contours, F f) const
+    {
+        for (std::size_t k = 0; k < contours.size(); ++k) {
+            const Outline& p = contours[k];
+            for (std::size_t i = 0; i < p.size(); ++i) {
+                const Vec2 a = p[i], b = p[after(i, p.size())];
+                const auto [c0, r0] = cellOf(glm::min(a, b) - Vec2(m_widths[k]));
+                const auto [c1, r1] = cellOf(glm::max(a, b) + Vec2(m_widths[k]));
+                for (int r = r0; r <= r1; ++r)
+                    for (int c = c0; c <= c1; ++c)
+                        f(std::size_t(r) * std::size_t(m_columns) + std::size_t(c),
+                          Edge{std::uint32_t(k), std::uint32_t(i)});
+            }
+        }
+    }
+
+    const std::vector<double>& m_widths;
+    double m_cell = 1.0;
+    Vec2 m_origin{0.0};
+    int m_columns = 0, m_rows = 0;
+    std::vector<std::uint32_t> m_start;
+    std::vector<Edge> m_entries;
+};
+
+} // namespace vf::sim
