@@ -91,14 +91,17 @@ public:
     }
 
     // Where the edge after a needs a vertex, as a fraction along it at the start of the motion: in
-    // the middle when it is longer than its spacing; for an exact motion also where its chord strays
-    // from the mapped curve by more than the tolerance, at a crease first.
+    // the middle when it is longer than its spacing; for an exact motion also at a crease inside it
+    // (a vertex on the crease: where the map folds a contour into a hairpin, the two sides near the
+    // tip lie closer than any tolerance, and only a vertex at the tip keeps its chords apart), and
+    // where its chord strays from the mapped curve by more than the tolerance.
     std::optional<double> splitPoint(int a, const ExactMotion& motion) const
     {
         const int b = m_next[a];
         if (m_rewind && motion.chordTolerance > 0.0) {
             if (motion.crease)
-                if (const std::optional<double> s = motion.crease(m_previous[a], m_previous[b]); s && strays(a, *s, motion))
+                if (const std::optional<double> s = motion.crease(m_previous[a], m_previous[b]);
+                    s && (creaseInside(a, *s) || strays(a, *s, motion)))
                     return s;
             if (length(a, b) > spacing(a, b) || strays(a, 0.5, motion))
                 return 0.5;
@@ -154,6 +157,16 @@ public:
                 return true;
         }
         return false;
+    }
+
+    // Whether fraction s of the edge after a lies farther from both its ends, at the start of the
+    // motion, than 2^-32 of its coordinates: a crease not yet on a vertex. (A crease found again on
+    // a vertex placed on it lies some roundings off: those must not be split again and again.)
+    bool creaseInside(int a, double s) const
+    {
+        const Vec2 p = m_previous[a], q = m_previous[m_next[a]];
+        const double reach = std::max({std::abs(p.x), std::abs(p.y), std::abs(q.x), std::abs(q.y)});
+        return std::min(s, 1.0 - s) * glm::distance(p, q) > 0x1p-32 * reach;
     }
 
     // Whether the point at fraction s of the edge after a, moved by the motion, lies farther than its

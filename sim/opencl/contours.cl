@@ -226,16 +226,26 @@ VF_INLINE bool straysFrom(MOTION_ARGS, float2 x, float2 a, float2 b)
     return dot(off, off) > tolerance * tolerance;
 }
 
+// Whether fraction s of the segment a–b lies farther from both its ends than eight roundings of the
+// coordinates: a crease not yet on a vertex (one placed on it is found again some roundings off).
+VF_INLINE bool creaseInside(float2 a, float2 b, float s)
+{
+    const float2 reach = fmax(fabs(a), fabs(b));
+    return fmin(s, 1.0f - s) * distance(a, b) > 8.0f * FLT_EPSILON * fmax(reach.x, reach.y);
+}
+
 // ContourTracker's splitPoint: where the edge (position, previous position) left–right needs a
-// vertex, as a fraction along it, or -1. A map depicted exactly puts one at a crease where the
-// chord strays from the mapped curve; else an edge gets one in the middle when it is longer than
-// its spacing (`tooLong`) or, for a map depicted exactly, when its chord strays there.
+// vertex, as a fraction along it, or -1. A map depicted exactly puts one at a crease inside it (a
+// hairpin's tip) or where its chord strays from the mapped curve at the crease; else an edge gets
+// one in the middle when it is longer than its spacing (`tooLong`) or, for a map depicted exactly,
+// when its chord strays there.
 VF_INLINE float splitPoint(MOTION_ARGS, float4 left, float4 right, bool tooLong)
 {
     if (!depictedExactly(MOTION_PASS))
         return tooLong ? 0.5f : -1.0f;
     const float s = creaseCrossing(MOTION_PASS, left.zw, right.zw);
-    if (s >= 0.0f && straysFrom(MOTION_PASS, mapped(MOTION_PASS, mix(left.zw, right.zw, s)), left.xy, right.xy))
+    if (s >= 0.0f && (creaseInside(left.zw, right.zw, s) ||
+                      straysFrom(MOTION_PASS, mapped(MOTION_PASS, mix(left.zw, right.zw, s)), left.xy, right.xy)))
         return s;
     return tooLong || straysFrom(MOTION_PASS, mapped(MOTION_PASS, 0.5f * (left.zw + right.zw)), left.xy, right.xy)
                ? 0.5f

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <random>
 
@@ -341,6 +342,23 @@ private slots:
         const double share = double(differ) / (size * size);
         qInfo("%.4f %% of the pixels differ", 100.0 * share);
         QVERIFY2(share <= 2e-4, qPrintable(QString::number(share)));
+    }
+
+    // Sharp wavy tines drawn through thin bands fold them into hairpins, whose two sides lie closer
+    // than any tolerance near the tip (each side keeps a vertex on the waved crease): nothing crosses.
+    void wavyHairpinsKeepTheirTips_data() { test::addBackendRows(); }
+    void wavyHairpinsKeepTheirTips()
+    {
+        QFETCH(QString, backend);
+        VF_REQUIRE_BACKEND(backend);
+        auto simulation = stillWater(backend);
+        for (int k = 0; k < 8; ++k) {
+            const double y = 0.3 + 0.05 * k;
+            simulation->addRegion({sim::resample({{0.2, y}, {0.8, y}, {0.8, y + 0.004}, {0.2, y + 0.004}}, 0.004)});
+        }
+        const sim::Comb comb{{0.5, 0.2}, {0.5, 0.5}, 5, 0.1, 0.001, 0.03, 0.13, 0.0};  // z/u = 300 at a tine
+        QVERIFY(simulation->applyMap(comb));
+        QCOMPARE(crossings(outlines(*simulation)), std::size_t(0));
     }
 
     void twentyCombsCrossNothing_data() { test::addBackendRows(); }
