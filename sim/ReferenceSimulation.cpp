@@ -132,11 +132,8 @@ StepReport ReferenceSimulation::step(double dt)
     }
     m_pendingStylus.clear();
     if (pinchCheckDue(start, time())) {
-        {
-            const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
-            report.pinchesCut = m_tracker.cutPinches();
-        }
-        separateLayers();
+        const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
+        report.pinchesCut = m_tracker.cutPinches();
     }
     return report;
 }

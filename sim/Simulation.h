@@ -134,7 +134,8 @@ protected:
     virtual bool pushOutward(Vec2 center, double radius) = 0;
     // Layers between two contours widened to the pinch width (sim/Separation.h): before every drop
     // and exact map (they press layers) and after every drop (it leaves ink a hair from its centre
-    // a hair outside its rim), as the steps do at their pinch checks.
+    // a hair outside its rim). Not in the steps: there the moves cost marbling a third of its time
+    // (the refinement works the little bumps they leave), and flow presses layers gradually.
     virtual void separateLayers() = 0;
 };
 

@@ -113,11 +113,8 @@ StepReport OpenClSimulation::step(double dt)
     }
     m_pendingStylus.clear();
     if (pinchCheckDue(start, m_time)) {
-        {
-            const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
-            report.pinchesCut = m_contours->cutPinches();
-        }
-        separateLayers();
+        const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
+        report.pinchesCut = m_contours->cutPinches();
     }
     return report;
 }
