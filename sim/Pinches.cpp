@@ -217,13 +217,18 @@ std::vector<double> sharedTargets(double target, const std::vector<Loop>& kept)
     return targets;
 }
 
-std::size_t cutPinches(std::vector<Contour>& contours)
+std::vector<Outline> outlinesOf(const std::vector<Contour>& contours)
 {
     std::vector<Outline> outlines;
     outlines.reserve(contours.size());
     for (const Contour& c : contours)
         outlines.emplace_back(c.positions);
-    const std::vector<ContourCut> cuts = findCuts(outlines);
+    return outlines;
+}
+
+std::size_t cutPinches(std::vector<Contour>& contours)
+{
+    const std::vector<ContourCut> cuts = findCuts(outlinesOf(contours));
     if (cuts.empty())
         return 0;
     std::size_t made = 0;

@@ -28,6 +28,9 @@ inline constexpr double pinchCheckPeriod = 0.1;
 // snapshot checks where the original run did).
 bool pinchCheckDue(double t0, double t1);
 
+// The contours' positions, as the searches take them.
+std::vector<Outline> outlinesOf(const std::vector<Contour>& contours);
+
 // Each contour's pinch width: pinchSpacings single-precision spacings of its largest coordinate.
 std::vector<double> pinchWidths(const std::vector<Outline>& contours);
 

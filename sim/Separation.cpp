@@ -184,11 +184,7 @@ void moveVertices(std::vector<Contour>& contours, const std::vector<VertexMove>&
 
 std::size_t separateLayers(std::vector<Contour>& contours)
 {
-    std::vector<Outline> outlines;
-    outlines.reserve(contours.size());
-    for (const Contour& c : contours)
-        outlines.emplace_back(c.positions);
-    const std::vector<VertexMove> moves = findSeparations(outlines);
+    const std::vector<VertexMove> moves = findSeparations(outlinesOf(contours));
     moveVertices(contours, moves);
     return moves.size();
 }
