@@ -1,7 +1,8 @@
 // The contour tracker of sim/ContourTracker.cpp on an OpenCL device: the host side of one step
 // (advect, spacing, proximity grid, refinement by stream compaction, area correction, the cuts of
-// contour surgery, the widening of layers) and the transfers in and out. One file because every phase works on the same device buffers, held in
-// Impl, and its launches must agree with them; the kernels are in contours*.cl, split by phase.
+// contour surgery, the widening of layers) and the transfers in and out. One file because every
+// phase works on the same device buffers, held in Impl, and its launches must agree with them;
+// the kernels are in contours*.cl, split by phase.
 // The seam for a split is the read-back half (snapshots, outlines, staging, requests, from
 // enqueueSnapshot on): it only reads the vertex buffers (through the motion scratch), and would
 // move out with Impl's declaration in a private header shared by both files; contour surgery

@@ -346,8 +346,8 @@ private slots:
 
     // Sharp wavy tines drawn through thin bands fold them into hairpins, whose two sides lie closer
     // than any tolerance near the tip (each side keeps a vertex on the waved crease): nothing crosses.
-    void wavyHairpinsKeepTheirTips_data() { test::addBackendRows(); }
-    void wavyHairpinsKeepTheirTips()
+    void wavyHairpinsDoNotCross_data() { test::addBackendRows(); }
+    void wavyHairpinsDoNotCross()
     {
         QFETCH(QString, backend);
         VF_REQUIRE_BACKEND(backend);
