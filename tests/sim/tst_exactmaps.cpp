@@ -1,7 +1,9 @@
 // The tools' exact maps (sim/ExactMap: combs straight and wavy, circular combs, swirls) on every
-// backend: they keep every contour's area, the map's inverse undoes it, a long pattern of combs
-// crosses no contours, and the ink lands where the inverse maps pull each pixel back from.
+// backend: they keep every contour's area, the map's inverse undoes it, folds cross nothing, and
+// the ink lands where the inverse maps pull each pixel back from (a long pattern of combs:
+// tst_combpattern).
 #include "Backends.h"
+#include "StillWater.h"
 #include "sim/ExactMap.h"
 #include "sim/Crossings.h"
 
@@ -21,43 +23,12 @@ using sim::ExactMap;
 using sim::Swirl;
 using sim::Polygon;
 using sim::Vec2;
+using test::crossings;
+using test::dropGrid;
+using test::outlines;
+using test::stillWater;
 
 namespace {
-
-// Rows of touching-free drops, as a marbler starts: `rows` × `rows` circles in the unit square.
-std::vector<Polygon> dropGrid(int rows, double spacing)
-{
-    std::vector<Polygon> drops;
-    const double pitch = 1.0 / rows, radius = 0.4 * pitch;
-    for (int i = 0; i < rows; ++i)
-        for (int j = 0; j < rows; ++j)
-            drops.push_back(sim::circle({(i + 0.5) * pitch, (j + 0.5) * pitch}, radius, spacing));
-    return drops;
-}
-
-std::unique_ptr<sim::Simulation> stillWater(const QString& backend, bool areaCorrection = false)
-{
-    sim::SimulationSettings settings;
-    settings.tracking.areaCorrection = areaCorrection;
-    settings.flow = sim::SimulationSettings::FlowType::Analytic;  // at rest: only the combs move ink
-    return test::makeBackend(backend, settings);
-}
-
-std::vector<Polygon> outlines(const sim::Simulation& simulation)
-{
-    std::vector<Polygon> out;
-    for (sim::Contour& c : simulation.contours())
-        out.push_back(std::move(c.positions));
-    return out;
-}
-
-std::size_t crossings(const std::vector<Polygon>& polygons)
-{
-    std::vector<const Polygon*> pointers;
-    for (const Polygon& p : polygons)
-        pointers.push_back(&p);
-    return sim::countCrossings(pointers);
-}
 
 // The maps keepsAreasAndIsUndone tries, by name.
 ExactMap namedMap(const QString& name)
@@ -69,25 +40,6 @@ ExactMap namedMap(const QString& name)
     if (name == u"swirl"_qs)
         return Swirl{{0.5, 0.5}, 0.3, 2.5};
     return Comb{{0.1, 0.5}, {0.4, 0.5}, 4, 0.25, 0.03};
-}
-
-// A pattern of twenty combs: passes across and along the tray with 3 to 7 tines, both ways, as
-// gel-git and nonpareil are made, every third one wavy.
-std::vector<Comb> twentyCombs()
-{
-    std::vector<Comb> combs;
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (int k = 0; k < 20; ++k) {
-        const bool across = k % 2 == 0;
-        const double at = 0.3 + 0.4 * unit(random), shift = 0.03 + 0.05 * unit(random);
-        const double sign = (k / 2) % 2 == 0 ? 1.0 : -1.0;
-        const Vec2 from = across ? Vec2(at, 0.5) : Vec2(0.5, at);
-        const Vec2 to = from + sign * shift * (across ? Vec2(0.0, 1.0) : Vec2(1.0, 0.0));
-        const double amplitude = k % 3 == 2 ? 0.03 * unit(random) : 0.0;  // every third one wavy
-        combs.push_back({from, to, 3 + k % 5, 0.12, 0.02 + 0.02 * unit(random), amplitude, 0.25, 6.0 * unit(random)});
-    }
-    return combs;
 }
 
 struct Drop {
@@ -359,27 +311,6 @@ private slots:
         const sim::Comb comb{{0.5, 0.2}, {0.5, 0.5}, 5, 0.1, 0.001, 0.03, 0.13, 0.0};  // z/u = 300 at a tine
         QVERIFY(simulation->applyMap(comb));
         QCOMPARE(crossings(outlines(*simulation)), std::size_t(0));
-    }
-
-    void twentyCombsCrossNothing_data() { test::addBackendRows(); }
-    void twentyCombsCrossNothing()
-    {
-        QFETCH(QString, backend);
-        VF_REQUIRE_BACKEND(backend);
-        auto simulation = stillWater(backend);
-        for (const Polygon& drop : dropGrid(5, simulation->settings().tracking.maxSpacing))
-            simulation->addRegion({drop});
-        std::vector<double> areas;
-        for (const Polygon& p : outlines(*simulation))
-            areas.push_back(sim::signedArea(p));
-        for (const Comb& comb : twentyCombs())
-            QVERIFY(simulation->applyMap(comb));
-        const std::vector<Polygon> combed = outlines(*simulation);
-        QCOMPARE(crossings(combed), std::size_t(0));
-        QCOMPARE(combed.size(), areas.size());
-        for (std::size_t c = 0; c < areas.size(); ++c)
-            QVERIFY2(std::abs(sim::signedArea(combed[c]) - areas[c]) < 1e-3 * areas[c],  // 1.6e-4 measured
-                     qPrintable(QString::number(sim::signedArea(combed[c]) / areas[c] - 1.0)));
     }
 };
 
