@@ -206,6 +206,40 @@ double stylusStrength(const FluidSettings& settings, double dt)
     return 1.0 - std::exp(-dt / settings.stylusResponse);  // 1 for a response of 0
 }
 
+void validateForce(const BodyForce& force, int nx, int ny)
+{
+    const MacVelocity& a = force.acceleration;
+    if (a.nx != nx || a.ny != ny || a.u.size() != std::size_t(nx + 1) * ny || a.v.size() != std::size_t(nx) * (ny + 1))
+        throw std::invalid_argument("body force: expected a " + std::to_string(nx) + " x " + std::to_string(ny)
+                                    + " grid");
+    const auto finite = [](const std::vector<double>& values) {
+        return std::all_of(values.begin(), values.end(), [](double x) { return std::isfinite(x); });
+    };
+    if (!finite(a.u) || !finite(a.v) || !(force.damping >= 0.0) || !std::isfinite(force.damping))
+        throw std::invalid_argument("body force: values must be finite and the damping zero or positive");
+}
+
+void FluidSolver::addForce(const BodyForce& force)
+{
+    validateForce(force, m_velocity.nx, m_velocity.ny);
+    m_pendingForce = force;
+}
+
+void FluidSolver::applyForce(const BodyForce& force, double dt)
+{
+    const double decay = std::exp(-force.damping * dt);
+    const auto grids = faceGrids(m_velocity);
+    const auto values = components(m_velocity);
+    const std::array<const std::vector<double>*, 2> accelerations = {&force.acceleration.u, &force.acceleration.v};
+    for (int c = 0; c < 2; ++c) {
+        std::vector<double>& component = *values[c];
+        const std::vector<double>& a = *accelerations[c];
+        forEachFace(grids[c], interior(grids[c]), [&](std::size_t k, int, int) {
+            component[k] = component[k] * decay + a[k] * dt;
+        });
+    }
+}
+
 void FluidSolver::addStylus(Vec2 from, Vec2 to, double radius, double duration)
 {
     // A pen that takes no time (or a NaN time) to move jumped: it carries no velocity, so no force.
@@ -230,6 +264,8 @@ void FluidSolver::step(double dt)
     for (const StylusSegment& segment : m_pendingStylus)
         applyStylus(segment, dt);
     m_pendingStylus.clear();
+    if (m_pendingForce)
+        applyForce(*std::exchange(m_pendingForce, std::nullopt), dt);
     project();
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace vf::sim {
@@ -40,6 +41,17 @@ struct MacVelocity {
     friend bool operator==(const MacVelocity&, const MacVelocity&) = default;
 };
 
+// A force over the whole grid for one step, as target-driven design steers the ink (sim/TargetDrive.h):
+// every interior face gains `acceleration` (on the faces, laid out as MacVelocity) times dt, and
+// the fluid's own velocity there decays at `damping` (1/s): u = u e^(-damping dt) + a dt.
+struct BodyForce {
+    MacVelocity acceleration;
+    double damping = 0.0;
+};
+
+// Throws std::invalid_argument (one line) for a force FluidSolver::addForce refuses on an nx x ny grid.
+void validateForce(const BodyForce& force, int nx, int ny);
+
 // The share of the way from the fluid's velocity to the pen's that one step of dt covers under the
 // pen's centre (both solvers use it).
 double stylusStrength(const FluidSettings& settings, double dt);
@@ -55,7 +67,11 @@ public:
     // with time constant settings().stylusResponse.
     void addStylus(Vec2 from, Vec2 to, double radius, double duration);
 
-    // One step: advection, implicit viscosity, stylus forces, pressure projection.
+    // A body force for the next step() only, replacing any given before it. Throws
+    // std::invalid_argument for a field on another grid, a non-finite value or a negative damping.
+    void addForce(const BodyForce& force);
+
+    // One step: advection, implicit viscosity, stylus and body forces, pressure projection.
     void step(double dt);
 
     // The field at rest on the grid of `settings`.
@@ -81,6 +97,7 @@ private:
     };
 
     void applyStylus(const StylusSegment& segment, double dt);
+    void applyForce(const BodyForce& force, double dt);
     void advect(double dt);
     void advectComponent(int component, double dt);
     void diffuse(double dt);
@@ -91,6 +108,7 @@ private:
     int m_lastPressureIterations = 0;
 
     std::vector<StylusSegment> m_pendingStylus;
+    std::optional<BodyForce> m_pendingForce;
     MacVelocity m_advected;                  // advection target, swapped with m_velocity
     std::vector<double> m_backward;          // MacCormack: the forward result traced back
     std::vector<double> m_low, m_high;       // MacCormack limiter bounds per face

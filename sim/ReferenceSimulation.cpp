@@ -84,6 +84,7 @@ void ReferenceSimulation::restore(const SimulationState& state)
         m_pendingStylus.clear();
     }
     m_flow->setTime(state.time);
+    m_pendingForce.reset();
     m_tracker.setContours(state.contours);
     m_regionCount = state.regionCount;
     m_regionsCopy.reset();
@@ -120,6 +121,8 @@ StepReport ReferenceSimulation::step(double dt)
             const StylusSegment p = s.part(k, report.substeps);
             m_fluid->solver().addStylus(p.from, p.to, p.radius, p.duration);
         }
+        if (m_pendingForce)
+            m_fluid->solver().addForce(*m_pendingForce);
         const double t = time();
         {
             const PhaseClock::Scope timing(&m_phases, Phase::Fluid);
@@ -131,6 +134,7 @@ StepReport ReferenceSimulation::step(double dt)
         }
     }
     m_pendingStylus.clear();
+    m_pendingForce.reset();
     if (pinchCheckDue(start, time())) {
         const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
         report.pinchesCut = m_tracker.cutPinches();

@@ -124,6 +124,14 @@ DropReport Simulation::drop(Vec2 center, double radius)
     return report;
 }
 
+void Simulation::drive(const BodyForce& force)
+{
+    if (settings().flow != SimulationSettings::FlowType::Fluid)
+        return;
+    validateForce(force, settings().fluid.nx, settings().fluid.ny);
+    m_pendingForce = force;
+}
+
 std::vector<std::vector<Polygon>> Simulation::regions() const
 {
     std::vector<std::vector<Polygon>> out(regionCount());

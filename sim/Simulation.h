@@ -68,6 +68,12 @@ public:
     // Only a fluid flow responds.
     virtual void stylus(Vec2 from, Vec2 to, double radius, double duration) = 0;
 
+    // A force over the fluid grid for the next step, in every substep (target-driven design:
+    // sim/TargetDrive.h); the caller computes it from the ink before each step. Only a fluid flow
+    // responds. It is not part of a snapshot: a state restored drops it. Throws
+    // std::invalid_argument (one line) for a force FluidSolver::addForce refuses.
+    void drive(const BodyForce& force);
+
     // Advances by dt, split into substeps when vertices would move too far for their spacing.
     // Throws std::runtime_error when the flow turns non-finite.
     virtual StepReport step(double dt) = 0;
@@ -126,6 +132,7 @@ public:
 
 protected:
     PhaseClock m_phases;
+    std::optional<BodyForce> m_pendingForce;  // drive(), for the next step's substeps
 
     // The two backend parts of drop(): raise the area-correction target of every contour winding
     // around `p` by `area`, and move every contour by the drop's push, refining under it (false

@@ -43,6 +43,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -568,6 +569,7 @@ struct DeviceFluid::Impl {
     void step(double dt);
     void diffuse(double dt);
     void applyStylus(const StylusSegment& segment, double dt);
+    void applyForce(double dt);
     // The u faces as the first ny rows, the v faces as the ny + 1 rows after them (fluid.cl, Face).
     Launch overFaces(cl::Kernel k) const { return overLattice(std::move(k), nx + 1, 2 * ny + 1); }
 
@@ -583,13 +585,15 @@ struct DeviceFluid::Impl {
     Field start;       // the field at the step's start (the solver advects from it)
     cl::Buffer stream; // the stream functions at the step's start, halfway, and end (flow_fluid.cl)
     Field forward;  // MacCormack: the semi-Lagrangian result, traced back
+    Field acceleration;  // the body force of the next step (addForce), if forceDamping is set
     DevicePcg pressure;
     std::vector<DevicePcg> viscosity;  // u, v; none for an inviscid fluid
     Launch advect;
     std::vector<Launch> correct;  // MacCormack's second pass, if any
-    Launch stylus, divergence, gradient, streamFunction;
+    Launch stylus, force, divergence, gradient, streamFunction;
     std::vector<Launch> gather, scatter;
     std::vector<StylusSegment> pending;
+    std::optional<double> forceDamping;
 };
 
 DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
@@ -608,6 +612,7 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
     , current(field())
     , start(field())
     , stream(memory.zeros(3 * streamCorners() * sizeof(cl_float)))
+    , acceleration(field())
     , pressure(device, memory, program, pressureStencil(), float(s.pressureTolerance),
                kPressureRoundoffFloor)
 {
@@ -625,6 +630,8 @@ DeviceFluid::Impl::Impl(Device& device, const FluidSettings& s)
     }
     stylus = overFaces(kernel(program, "stylus", current.u, current.v, nx, ny, float(hx),
                               float(hy), 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f));
+    force = overFaces(kernel(program, "bodyForce", current.u, current.v, acceleration.u, acceleration.v,
+                             nx, ny, 0.0f, 0.0f));
     divergence = overLattice(kernel(program, "divergence", current.u, current.v, nx, ny, float(hx),
                                     float(hy), pressure.b(), pressure.partials()),
                              nx, ny);
@@ -701,6 +708,8 @@ void DeviceFluid::Impl::step(double dt)
     for (const StylusSegment& segment : pending)
         applyStylus(segment, dt);
     pending.clear();
+    if (forceDamping)
+        applyForce(dt);
     enqueue(queue, divergence);
     pressure.solve(iterationCap(nx, ny));
     enqueue(queue, gradient);
@@ -728,6 +737,14 @@ void DeviceFluid::Impl::applyStylus(const StylusSegment& segment, double dt)
     enqueue(queue, stylus);
 }
 
+void DeviceFluid::Impl::applyForce(double dt)
+{
+    force.kernel.setArg(6, float(std::exp(-*forceDamping * dt)));
+    force.kernel.setArg(7, float(dt));
+    enqueue(queue, force);
+    forceDamping.reset();
+}
+
 DeviceFluid::DeviceFluid(Device& device, const FluidSettings& settings)
 {
     // The reference solver's validation, so both refuse the same settings with the same message.
@@ -748,6 +765,16 @@ void DeviceFluid::addStylus(Vec2 from, Vec2 to, double radius, double duration)
     if (!isFinite(from) || !isFinite(to) || !isFinite(velocity))
         return;
     m->pending.push_back({from, to, radius, velocity});
+}
+
+void DeviceFluid::addForce(const BodyForce& force)
+{
+    validateForce(force, m->nx, m->ny);
+    translatingErrors(m->device, [&] {
+        writeFloats(m->queue, m->acceleration.u, force.acceleration.u);
+        writeFloats(m->queue, m->acceleration.v, force.acceleration.v);
+    });
+    m->forceDamping = force.damping;
 }
 
 void DeviceFluid::step(double dt)

@@ -17,6 +17,7 @@ public:
 
     const FluidSettings& settings() const override;
     void addStylus(Vec2 from, Vec2 to, double radius, double duration) override;
+    void addForce(const BodyForce& force) override;
     void step(double dt) override;
     FlowBinding binding(double t0, double t1) const override;
     MacVelocity readVelocity() const override;

@@ -25,6 +25,9 @@ public:
     // As FluidSolver::addStylus: applied during the next step().
     virtual void addStylus(Vec2 from, Vec2 to, double radius, double duration) = 0;
 
+    // As FluidSolver::addForce (validated there): applied during the next step().
+    virtual void addForce(const BodyForce& force) = 0;
+
     // One step; afterwards binding() blends across it.
     virtual void step(double dt) = 0;
 

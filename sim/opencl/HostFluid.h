@@ -15,6 +15,7 @@ public:
 
     const FluidSettings& settings() const override { return m_flow.solver().settings(); }
     void addStylus(Vec2 from, Vec2 to, double radius, double duration) override;
+    void addForce(const BodyForce& force) override { m_flow.solver().addForce(force); }
     void step(double dt) override;
     FlowBinding binding(double t0, double t1) const override;
     MacVelocity readVelocity() const override { return m_flow.solver().velocity(); }

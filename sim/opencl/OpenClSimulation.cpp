@@ -103,6 +103,8 @@ StepReport OpenClSimulation::step(double dt)
                 const StylusSegment p = s.part(k, report.substeps);
                 m_fluid->addStylus(p.from, p.to, p.radius, p.duration);
             }
+            if (m_pendingForce)
+                m_fluid->addForce(*m_pendingForce);
             const PhaseClock::Scope timing(&m_phases, Phase::Fluid);
             m_fluid->step(h);
         }
@@ -112,6 +114,7 @@ StepReport OpenClSimulation::step(double dt)
         m_time += h;
     }
     m_pendingStylus.clear();
+    m_pendingForce.reset();
     if (pinchCheckDue(start, m_time)) {
         const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
         report.pinchesCut = m_contours->cutPinches();
@@ -144,6 +147,7 @@ void OpenClSimulation::restore(const SimulationState& state)
     } else {
         m_pendingStylus.clear();
     }
+    m_pendingForce.reset();
     m_regionCount = state.regionCount;
     m_time = state.time;
 }

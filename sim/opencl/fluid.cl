@@ -183,6 +183,18 @@ KERNEL_1D void stylus(__global float* u, __global float* v, int nx, int ny, floa
     }
 }
 
+// FluidSolver::applyForce: u = u decay + a dt on the interior faces, decay = e^(-damping dt).
+KERNEL_1D void bodyForce(__global float* u, __global float* v, __global const float* au,
+                         __global const float* av, int nx, int ny, float decay, float dt)
+{
+    const Face f = thisFace(nx, ny);
+    if (!f.valid || f.wall)
+        return;
+    __global float* component = f.grid.normalX ? u : v;
+    const float a = (f.grid.normalX ? au : av)[f.index];
+    component[f.index] = component[f.index] * decay + a * dt;
+}
+
 // ---- Linear systems: storage --------------------------------------------------------------------
 
 // One multigrid level: mx x my unknowns stored with a ring of ghost cells (stride mx + 2) whose
