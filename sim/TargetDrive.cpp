@@ -10,9 +10,10 @@ namespace {
 // Points per cell side where the shapes are rasterised: enough that a thin stroke of a letter
 // shows as a partial cell rather than vanishing between samples.
 constexpr int kSamples = 4;
-// ρ̃* is floored at this share of its largest value: where the target is no nearer than that,
-// ∇ρ̃*/ρ̃* (the pull) fades instead of growing without bound.
-constexpr double kTargetFloor = 1e-4;
+// ρ̃* is floored at this share of its largest value, only so that no division is by zero: the
+// blurs reach 4σ_k, and beyond them all ρ̃* is 0 and so is the pull. Any larger floor would weaken
+// the far pull, where the wide blurs' weights are as small as (σ/σ_k)⁴.
+constexpr double kTargetFloor = 1e-200;
 
 } // namespace
 
@@ -25,14 +26,13 @@ void validateDriveSettings(const TargetDriveSettings& s)
         throw std::invalid_argument("target drive: blur must be positive");
 }
 
-TargetDrive::TargetDrive(const std::vector<Polygon>& target, const FluidSettings& fluid,
+TargetDrive::TargetDrive(const std::vector<std::vector<Polygon>>& target, const FluidSettings& fluid,
                          const TargetDriveSettings& settings)
-    : m_target(target)
-    , m_settings(settings)
+    : m_settings(settings)
     , m_cells{fluid.nx, fluid.ny, fluid.width, fluid.height}
 {
     validateDriveSettings(settings);
-    const std::vector<double> covered = coverage({target}, m_cells, kSamples);
+    const std::vector<double> covered = coverage(target, m_cells, kSamples);
     m_blurredTarget.assign(m_cells.size(), 0.0);
     m_pull.assign(m_cells.size(), 0.0);
     const double widest = 0.5 * std::max(fluid.width, fluid.height);

@@ -38,18 +38,18 @@ void validateDriveSettings(const TargetDriveSettings& settings);
 
 class TargetDrive {
 public:
-    // `target`: closed contours filled together, even-odd, in canvas units; on the grid of `fluid`.
-    // Throws std::invalid_argument for invalid settings or a target that covers no cell.
-    TargetDrive(const std::vector<Polygon>& target, const FluidSettings& fluid, const TargetDriveSettings& settings);
+    // `target`: shapes, each closed contours filled together even-odd, in canvas units; on the
+    // grid of `fluid`. Throws std::invalid_argument for invalid settings or a target that covers
+    // no cell.
+    TargetDrive(const std::vector<std::vector<Polygon>>& target, const FluidSettings& fluid,
+                const TargetDriveSettings& settings);
 
     // The force for the next step, given the ink now (every region's contours).
     BodyForce force(const std::vector<std::vector<Polygon>>& ink) const;
 
-    const std::vector<Polygon>& target() const { return m_target; }
     const TargetDriveSettings& settings() const { return m_settings; }
 
 private:
-    std::vector<Polygon> m_target;
     TargetDriveSettings m_settings;
     CellLattice m_cells;
     std::vector<double> m_blurredTarget;  // ρ̃* on the cells, floored

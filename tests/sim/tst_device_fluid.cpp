@@ -221,7 +221,7 @@ void TestDeviceFluid::bodyForceAgreesWithReference()
     const FluidSettings settings = fluidSettings(64, 64, 1.0, 1.0, 5e-3);
     DeviceFluid device(*m_device, settings);
     FluidSolver reference(settings);
-    const TargetDrive drive({circle({0.7, 0.5}, 0.15, 0.01)}, settings, {150.0, 3.0, 0.02});
+    const TargetDrive drive({{circle({0.7, 0.5}, 0.15, 0.01)}}, settings, {150.0, 3.0, 0.02});
     const BodyForce force = drive.force({{circle({0.3, 0.5}, 0.08, 0.01)}});
     for (int step = 0; step < 20; ++step) {
         device.addForce(force);

@@ -78,7 +78,7 @@ private slots:
     void forceLeadsInkTowardTheTarget()
     {
         sim::FluidSettings grid;
-        const sim::TargetDrive drive({square({0.6, 0.4}, {0.8, 0.6})}, grid, {});
+        const sim::TargetDrive drive({{square({0.6, 0.4}, {0.8, 0.6})}}, grid, {});
         const sim::BodyForce f = drive.force({{sim::circle({0.3, 0.5}, 0.05, 0.005)}});
         QCOMPARE(f.damping, drive.settings().attenuation);
         const int nx = grid.nx;
@@ -91,8 +91,8 @@ private slots:
     void badInputRefused()
     {
         sim::FluidSettings grid;
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, sim::TargetDrive({square({0.1, 0.1}, {0.2, 0.2})}, grid, {1.0, 1.0, 0.0}));
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, sim::TargetDrive({square({0.1, 0.1}, {0.2, 0.2})}, grid, {-1.0, 1.0, 0.02}));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, sim::TargetDrive({{square({0.1, 0.1}, {0.2, 0.2})}}, grid, {1.0, 1.0, 0.0}));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, sim::TargetDrive({{square({0.1, 0.1}, {0.2, 0.2})}}, grid, {-1.0, 1.0, 0.02}));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, sim::TargetDrive({}, grid, {}));
         auto simulation = sim::makeReferenceSimulation(gatheringWater());
         sim::BodyForce wrongGrid{sim::FluidSolver::atRest({8, 8, 1.0, 1.0}), 1.0};
@@ -117,7 +117,7 @@ private slots:
             areas.push_back(sim::signedArea(drop));
         }
         const Polygon disc = sim::circle({0.6, 0.5}, 0.16, 0.008);
-        const sim::TargetDrive drive({disc}, simulation->settings().fluid, {150.0, 3.0, 0.02});
+        const sim::TargetDrive drive({{disc}}, simulation->settings().fluid, {150.0, 3.0, 0.02});
         const CellLattice fine{256, 256, 1.0, 1.0};
         const double before = sim::intersectionOverUnion(simulation->regions(), {disc}, fine);
         for (int step = 0; step < 150; ++step) {
