@@ -417,6 +417,11 @@ void Document::stroke(const std::vector<sim::StylusSegment>& pens)
         m_port.stylus(pens);
 }
 
+void Document::gather(const QString& text, const std::shared_ptr<const sim::TargetDrive>& drive, double duration)
+{
+    pushSimulationCommand(text, [&] { m_port.gather(drive, duration); });
+}
+
 void Document::addRegions(const QString& commandText, const std::vector<NewRegion>& regions)
 {
     if (!canAddRegions() || regions.empty())

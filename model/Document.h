@@ -92,6 +92,10 @@ public:
     void beginStroke(const QString& text = {});
     void stroke(const std::vector<sim::StylusSegment>& pens);
     void addRegions(const QString& commandText, const std::vector<NewRegion>& regions);
+    // Target-driven design as one command called `text`: the fluid draws the ink into the drive's
+    // target for `duration` seconds of the steps to come (SimulationPort::gather); the command
+    // holds all they do until the next command, as a stroke does.
+    void gather(const QString& text, const std::shared_ptr<const sim::TargetDrive>& drive, double duration);
     // `control` names what changed them (a widget of the settings panel): changes by one control
     // while the command it began is still the open top of the history join that command, so that
     // holding a spin box's arrow down is one undo step. Empty: always a command of its own.

@@ -6,6 +6,10 @@
 #include "model/Scene.h"
 
 #include "model/SplitMix64.h"
+#include "model/TextOutlines.h"
+
+#include <QFont>
+#include <QGuiApplication>
 
 #include <glm/geometric.hpp>
 
@@ -248,6 +252,18 @@ std::vector<DropStroke> SpatterStroke::drops() const
                        colors[pick], QString()});
     }
     return out;
+}
+
+std::vector<sim::Polygon> targetContours(const std::variant<Shape, TextTarget>& target, double spacing)
+{
+    if (const auto* shape = std::get_if<Shape>(&target))
+        return shapeContours(*shape, spacing);
+    if (!qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
+        return {};
+    const TextTarget& text = std::get<TextTarget>(target);
+    QFont font(text.font);
+    font.setBold(text.bold);
+    return textContours(text.text, font, text.baseline, text.size, spacing);
 }
 
 } // namespace vf::model

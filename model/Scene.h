@@ -3,6 +3,7 @@
 // SceneReader fills it from JSON, SceneWriter writes it back, SceneRunner plays it.
 #include "model/SvgImport.h"
 #include "sim/ExactMap.h"
+#include "sim/TargetDrive.h"
 #include "sim/Geometry.h"
 
 #include <QByteArray>
@@ -244,8 +245,40 @@ struct PatternStroke {
     friend bool operator==(const PatternStroke&, const PatternStroke&) = default;
 };
 
+// Text for a target: the glyph outlines of `text` set in `font` (bold or not), the baseline
+// starting at `baseline`, an em square `size` canvas units tall (model/TextOutlines.h).
+struct TextTarget {
+    QString text;
+    QString font = QStringLiteral("DejaVu Sans");
+    bool bold = true;
+    sim::Vec2 baseline;
+    double size = 0.2;
+    friend bool operator==(const TextTarget&, const TextTarget&) = default;
+};
+
+// Target-driven design (sim/TargetDrive.h) from `time` for `duration` seconds: the fluid draws
+// the ink into `target`, a shape (not an SVG file) or text.
+struct GatherStroke {
+    double time = 0.0;
+    double duration = 3.0;
+    std::variant<Shape, TextTarget> target;
+    sim::TargetDriveSettings drive;
+    // The target's outline (even-odd), filled by the reader: text is set with the fonts installed.
+    std::vector<sim::Polygon> contours;
+
+    friend bool operator==(const GatherStroke& a, const GatherStroke& b)
+    {
+        return a.time == b.time && a.duration == b.duration && a.target == b.target && a.drive.strength == b.drive.strength
+            && a.drive.attenuation == b.drive.attenuation && a.drive.blur == b.drive.blur;
+    }
+};
+
+// The outline of a gather's target at `spacing`: a shape's contours, or the text's glyphs. Text
+// needs a QGuiApplication (the font database); without one it gives no contours.
+std::vector<sim::Polygon> targetContours(const std::variant<Shape, TextTarget>& target, double spacing);
+
 using Stroke = std::variant<StylusStroke, DropStroke, CombStroke, CircularCombStroke, SwirlStroke, SpatterStroke,
-                            PatternStroke>;
+                            PatternStroke, GatherStroke>;
 
 struct Scene {
     Canvas canvas;

@@ -7,6 +7,7 @@
 #include "model/SceneJson.h"
 
 #include "sim/AnalyticFlow.h"
+#include "sim/Coverage.h"
 #include "sim/Crossings.h"
 
 #include <QDir>
@@ -370,9 +371,49 @@ const Key<PatternStroke> patternKeys[] = {
     {u"duration"_s, false, [](const Field& f, PatternStroke& p) { p.duration = f.positive(kHuge); }},
 };
 
+const Key<TextTarget> textKeys[] = {
+    {u"string"_s, true, [](const Field& f, TextTarget& t) {
+         t.text = f.string();
+         if (t.text.trimmed().isEmpty())
+             f.fail(u"must hold some text"_s);
+     }},
+    {u"font"_s, false, [](const Field& f, TextTarget& t) { t.font = f.string(); }},
+    {u"bold"_s, false, [](const Field& f, TextTarget& t) { t.bold = f.boolean(); }},
+    {u"baseline"_s, true, [](const Field& f, TextTarget& t) { t.baseline = point(f); }},
+    {u"size"_s, true, [](const Field& f, TextTarget& t) { t.size = length(f); }},
+};
+
+// Each key is a kind of target; the object must hold exactly one of them. The region shapes but an
+// SVG file, or text.
+const Key<GatherStroke> targetKeys[] = {
+    {u"circle"_s, false, [](const Field& f, GatherStroke& g) { g.target = Shape(readAs(f, circleKeys)); }},
+    {u"ellipse"_s, false, [](const Field& f, GatherStroke& g) { g.target = Shape(readAs(f, ellipseKeys)); }},
+    {u"rect"_s, false, [](const Field& f, GatherStroke& g) { g.target = Shape(readAs(f, rectKeys)); }},
+    {u"polygon"_s, false, [](const Field& f, GatherStroke& g) { g.target = Shape(readPolygon(f)); }},
+    {u"text"_s, false, [](const Field& f, GatherStroke& g) { g.target = readAs(f, textKeys); }},
+};
+
+void readTarget(const Field& field, GatherStroke& gather)
+{
+    const std::span<const Key<GatherStroke>> keys(targetKeys);
+    if (const qsizetype count = field.object().size(); count != 1)
+        field.fail(u"must have exactly one key, one of: %1 (has %2)"_s.arg(keyList(keys)).arg(count));
+    readObject(field, gather, keys);
+}
+
+const Key<GatherStroke> gatherKeys[] = {
+    {u"tool"_s, true, readAlready<GatherStroke>},
+    {u"time"_s, true, [](const Field& f, GatherStroke& g) { g.time = seconds(f); }},
+    {u"duration"_s, false, [](const Field& f, GatherStroke& g) { g.duration = f.positive(kHuge); }},
+    {u"target"_s, true, readTarget},
+    {u"strength"_s, false, [](const Field& f, GatherStroke& g) { g.drive.strength = f.nonNegative(); }},
+    {u"attenuation"_s, false, [](const Field& f, GatherStroke& g) { g.drive.attenuation = f.nonNegative(); }},
+    {u"blur"_s, false, [](const Field& f, GatherStroke& g) { g.drive.blur = length(f); }},
+};
+
 Stroke readStroke(const Field& field)
 {
-    enum class Tool { Stylus, Drop, Comb, CircularComb, Swirl, Spatter, Pattern };
+    enum class Tool { Stylus, Drop, Comb, CircularComb, Swirl, Spatter, Pattern, Gather };
     const Field tool = field.member(u"tool"_s);
     if (!tool.exists())
         tool.fail(u"missing (required)"_s);
@@ -382,7 +423,8 @@ Stroke readStroke(const Field& field)
                                {u"circular-comb"_s, Tool::CircularComb},
                                {u"swirl"_s, Tool::Swirl},
                                {u"spatter"_s, Tool::Spatter},
-                               {u"pattern"_s, Tool::Pattern}})) {
+                               {u"pattern"_s, Tool::Pattern},
+                               {u"gather"_s, Tool::Gather}})) {
     case Tool::Stylus:
         return readAs(field, stylusKeys);
     case Tool::Drop:
@@ -395,6 +437,8 @@ Stroke readStroke(const Field& field)
         return readAs(field, swirlKeys);
     case Tool::Spatter:
         return readAs(field, spatterKeys);
+    case Tool::Gather:
+        return readAs(field, gatherKeys);
     case Tool::Pattern:
         break;
     }
@@ -452,6 +496,9 @@ void checkStrokesFitFlow(const Scene& scene, const KeyPath& root)
         if (std::holds_alternative<StylusStroke>(scene.strokes[i]))
             itemPath(root, u"strokes"_s, i).key(u"tool"_s).fail(
                 u"a stylus needs \"flow\": {\"type\": \"fluid\"}: an analytic flow is prescribed and does not react to it"_s);
+        if (std::holds_alternative<GatherStroke>(scene.strokes[i]))
+            itemPath(root, u"strokes"_s, i).key(u"tool"_s).fail(
+                u"gathering needs \"flow\": {\"type\": \"fluid\"}: it drives the fluid"_s);
         if (inWater(scene.strokes[i]))
             itemPath(root, u"strokes"_s, i).key(u"mode"_s).fail(
                 u"a tool in the water needs \"flow\": {\"type\": \"fluid\"}; use \"mode\": \"exact\" with an analytic flow"_s);
@@ -527,6 +574,24 @@ void checkPatternsFit(const Scene& scene, const KeyPath& root)
                 itemPath(root, u"strokes"_s, i).key(problem->key).fail(problem->message);
 }
 
+// Each gather's target outlined at the scene's spacing, which must cover some of the fluid grid.
+void outlineTargets(Scene& scene, const KeyPath& root)
+{
+    const sim::CellLattice grid{scene.flow.gridX, scene.flow.gridY, scene.canvas.width, scene.canvas.height};
+    for (std::size_t i = 0; i < scene.strokes.size(); ++i) {
+        auto* gather = std::get_if<GatherStroke>(&scene.strokes[i]);
+        if (!gather)
+            continue;
+        gather->contours = targetContours(gather->target, scene.tracking.maxSpacing);
+        const KeyPath target = itemPath(root, u"strokes"_s, i).key(u"target"_s);
+        if (gather->contours.empty())
+            target.fail(u"the text gives no outline: no glyphs, or no fonts (text needs the app or `vectorfluid render`)"_s);
+        const std::vector<double> covered = sim::coverage({gather->contours}, grid, 4);
+        if (std::all_of(covered.begin(), covered.end(), [](double c) { return c == 0.0; }))
+            target.fail(u"lies outside the canvas"_s);
+    }
+}
+
 // The starting shapes (and the circles drops add) must fit the vertex budget; without this check a
 // tiny max_spacing would make the program try to allocate billions of vertices before any step.
 void checkVertexBudget(const Scene& scene, const KeyPath& root)
@@ -586,6 +651,7 @@ Scene readSceneObject(const Field& root, const QString& folder)
     readObject(root, scene, std::span<const Key<Scene>>(sceneKeys));
     importSvgShapes(scene, root.path(), folder);
     checkStrokesFitFlow(scene, root.path());
+    outlineTargets(scene, root.path());
     checkNamesUnique(scene, root.path());
     checkPatternsFit(scene, root.path());
     checkVertexBudget(scene, root.path());

@@ -46,6 +46,7 @@ sim::StepReport SceneRunner::step(double dt)
     m_clock += dt;
     m_vertexLimitReached = m_script.applyTools(*m_simulation, t, m_clock) || m_vertexLimitReached;
     m_script.applyStylus(*m_simulation, t, m_clock);
+    m_script.applyGather(*m_simulation, t);
     sim::StepReport report = m_simulation->step(dt);
     report.vertexLimitReached = report.vertexLimitReached || m_vertexLimitReached;
     m_vertexLimitReached = report.vertexLimitReached;

@@ -28,7 +28,7 @@ public:
 
     // One step of the scene's dt (or `dt` when given): drops whose time has come land first, then
     // the exact maps due act, then the stylus strokes' share of this interval acts on the fluid,
-    // then the simulation steps.
+    // and a gather under way drives it, then the simulation steps.
     sim::StepReport step(double dt);
 
     Drawing drawing() const;

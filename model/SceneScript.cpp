@@ -19,6 +19,13 @@ SceneScript::SceneScript(const Scene& scene)
 
     for (const Stroke& s : scene.strokes)
         add(s, scene.canvas);
+    // Only the grid of the fluid matters to a drive: where it rasterises ink and target.
+    const sim::FluidSettings grid{scene.flow.gridX, scene.flow.gridY, scene.canvas.width, scene.canvas.height};
+    for (const Stroke& s : scene.strokes)
+        if (const auto* gather = std::get_if<GatherStroke>(&s))
+            m_drives.push_back({gather->time, gather->time + gather->duration,
+                                std::make_shared<const sim::TargetDrive>(std::vector<std::vector<sim::Polygon>>{gather->contours}, grid,
+                                                                       gather->drive)});
     std::stable_sort(m_drops.begin(), m_drops.end(), [](const DropStroke& a, const DropStroke& b) { return a.time < b.time; });
 
     QSet<QString> taken;
@@ -63,6 +70,8 @@ void SceneScript::add(const Stroke& s, const Canvas& canvas)
                     m_strokes.push_back(std::move(stroke));
     } else if (const auto* comb = std::get_if<CombStroke>(&s)) {
         addComb(*comb);
+    } else if (std::holds_alternative<GatherStroke>(s)) {
+        // A drive, built once the grid is known (the constructor).
     } else {
         addComb(std::get<CircularCombStroke>(s));
     }
@@ -119,6 +128,15 @@ void SceneScript::applyStylus(sim::Simulation& simulation, double from, double t
             simulation.stylus(at(a), at(b), stylus.radius, b - a);
         }
     }
+}
+
+void SceneScript::applyGather(sim::Simulation& simulation, double from) const
+{
+    for (auto drive = m_drives.rbegin(); drive != m_drives.rend(); ++drive)
+        if (from >= drive->start && from < drive->end) {
+            simulation.drive(drive->drive->force(simulation.regions()));
+            return;
+        }
 }
 
 } // namespace vf::model

@@ -5,6 +5,9 @@
 #include "model/Regions.h"
 #include "model/Scene.h"
 #include "sim/Simulation.h"
+#include "sim/TargetDrive.h"
+
+#include <memory>
 
 namespace vf::model {
 
@@ -29,6 +32,9 @@ public:
     // The stylus strokes' share of (from, to]: every piece of a pen path overlapping the interval
     // acts with the part of it inside the interval.
     void applyStylus(sim::Simulation& simulation, double from, double to) const;
+    // The gather (target-driven design) whose span [time, time + duration) holds `from`, driving
+    // the next step from the ink as it is (the one latest in the file where spans overlap).
+    void applyGather(sim::Simulation& simulation, double from) const;
 
 private:
     bool applyDrops(sim::Simulation& simulation, double from, double to) const;
@@ -46,6 +52,11 @@ private:
         sim::ExactMap map;
     };
     std::vector<TimedMap> m_maps;  // the exact tools'
+    struct TimedDrive {
+        double start, end;
+        std::shared_ptr<const sim::TargetDrive> drive;  // shared: the script is copied with its scene
+    };
+    std::vector<TimedDrive> m_drives;  // the gathers'
     RegionTable m_looks;
     int m_startingRegions = 0;
 };

@@ -192,6 +192,23 @@ QJsonObject toJson(const SwirlStroke& s)
     return swirl;
 }
 
+QJsonObject toJson(const TextTarget& t)
+{
+    return {{u"text"_s, QJsonObject{{u"string"_s, t.text}, {u"font"_s, t.font}, {u"bold"_s, t.bold},
+                                    {u"baseline"_s, pair(t.baseline)}, {u"size"_s, t.size}}}};
+}
+
+QJsonObject toJson(const GatherStroke& g)
+{
+    const QJsonObject target = std::holds_alternative<TextTarget>(g.target)
+                                   ? toJson(std::get<TextTarget>(g.target))
+                                   : toJson(std::get<Shape>(g.target), SvgShapes::Reference);
+    return {{u"tool"_s, u"gather"_s},          {u"time"_s, g.time},
+            {u"duration"_s, g.duration},       {u"target"_s, target},
+            {u"strength"_s, g.drive.strength}, {u"attenuation"_s, g.drive.attenuation},
+            {u"blur"_s, g.drive.blur}};
+}
+
 template <typename... Ts>
 QJsonObject toJson(const std::variant<Ts...>& value)
 {

@@ -6,8 +6,10 @@
 #include "model/Scene.h"
 #include "model/StateSlot.h"
 #include "sim/Stylus.h"
+#include "sim/TargetDrive.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace vf::model {
@@ -36,6 +38,9 @@ public:
     // Pens moving together (a stylus, or a comb's tines in the water), each from `from` to `to` in
     // `duration` seconds of wall time; they act together, during the next steps.
     virtual void stylus(const std::vector<sim::StylusSegment>& pens) = 0;
+    // Target-driven design: the fluid is driven into the drive's target for `duration` seconds of
+    // simulated time from now, in the steps to come; a gather under way, a restore or a load ends it.
+    virtual void gather(const std::shared_ptr<const sim::TargetDrive>& drive, double duration) = 0;
 
     // How many requests have been made so far; a frame says how many it has seen (Frame::serial).
     virtual std::uint64_t requestCount() const = 0;

@@ -27,6 +27,8 @@ public:
     EngineSettings configured;
     std::size_t verticesPerRegion = 3;
     int loads = 0, maps = 0;
+    std::shared_ptr<const sim::TargetDrive> gathering;
+    double gatherSeconds = 0.0;
     std::uint64_t requests = 0;
 
     void load(const Scene& scene, const EngineSettings& settings, const StateSlotPtr& start) override
@@ -58,6 +60,10 @@ public:
     void drop(sim::Vec2, double) override { ++requests, addContour(); }
     void applyMap(const sim::ExactMap&) override { ++requests, ++maps; }
     void stylus(const std::vector<sim::StylusSegment>& pens) override { ++requests, state.time += pens.front().duration; }
+    void gather(const std::shared_ptr<const sim::TargetDrive>& drive, double duration) override
+    {
+        ++requests, gathering = drive, gatherSeconds = duration;
+    }
     std::uint64_t requestCount() const override { return requests; }
 
     void flow(double seconds) { state.time += seconds; }  // what playing does between requests
@@ -175,6 +181,30 @@ private slots:
         QCOMPARE(doc.regions().back().color, QColor(Qt::green));
         doc.undoStack().undo();
         QCOMPARE(names(doc.regions()), QStringList({"r0"}));
+    }
+
+    // Gathering hands the drive to the simulation and is one command, holding what the steps after
+    // it do until the next command; undo goes back to before it.
+    void gatherIsOneCommandOverTheStepsItDrives()
+    {
+        FakePort port;
+        Document doc(port);
+        doc.openScene(sceneWithRegions(1), QStringLiteral("reference"));
+        const sim::SimulationState before = port.state;
+        const auto drive = std::make_shared<const sim::TargetDrive>(
+            std::vector<std::vector<sim::Polygon>>{{sim::circle({0.5, 0.5}, 0.2, 0.01)}}, sim::FluidSettings{}, sim::TargetDriveSettings{});
+        doc.gather(QStringLiteral("Gather into INK"), drive, 4.0);
+        QCOMPARE(port.gathering, drive);
+        QCOMPARE(port.gatherSeconds, 4.0);
+        port.flow(2.0);
+        const sim::SimulationState gathered = port.state;
+        doc.drop({0.5, 0.5}, 0.1, Qt::blue);
+        QCOMPARE(doc.undoStack().count(), 2);
+        QCOMPARE(doc.undoStack().text(0), QStringLiteral("Gather into INK"));
+        doc.undoStack().undo();
+        QVERIFY(port.state == gathered);
+        doc.undoStack().undo();
+        QVERIFY(port.state == before);
     }
 
     void aCommandEndsWhereTheNextStarts()
