@@ -9,6 +9,7 @@
 #include "app/ExportDialog.h"
 #include "app/MarblingToolBar.h"
 #include "app/PaletteDock.h"
+#include "app/GatherDialog.h"
 #include "app/PatternDialog.h"
 #include "app/RecentFiles.h"
 #include "app/Recovery.h"
@@ -203,6 +204,9 @@ void MainWindow::createTools()
     QAction* pattern = toolMenu->addAction(tr("P&attern…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), this,
                                            &MainWindow::choosePattern);
     pattern->setObjectName(QStringLiteral("pattern"));
+    QAction* gather = toolMenu->addAction(tr("&Gather Into…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G), this,
+                                          &MainWindow::chooseGather);
+    gather->setObjectName(QStringLiteral("gather"));
     findChild<QAction*>(QStringLiteral("toolDrop"))->setChecked(true);
     m_canvas->setTool(Tool::Drop);
 
@@ -485,6 +489,33 @@ void MainWindow::choosePattern()
     m_pattern = dialog.pattern();
     m_document.applyPattern(m_pattern);
     ++m_pattern.seed;  // the next one's drops fall elsewhere
+}
+
+// Target-driven design: the fluid draws the ink into the chosen target while the simulation plays,
+// one step of the history.
+void MainWindow::chooseGather()
+{
+    if (m_document.settings().flow.type != model::FlowSpec::Type::Fluid) {
+        m_report(tr("Cannot gather"), tr("Gathering drives the fluid; this scene's flow is prescribed."));
+        return;
+    }
+    std::vector<RegionOutline> regions;
+    for (const model::DrawnRegion& r : drawing().regions)
+        regions.push_back({r.name, r.contours});
+    GatherDialog dialog(m_document.scene().canvas, std::move(regions), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const GatherChoice& choice = dialog.choice();
+    const model::FlowSpec& flow = m_document.settings().flow;
+    const model::Canvas& canvas = m_document.scene().canvas;
+    try {
+        const auto drive = std::make_shared<const sim::TargetDrive>(
+            choice.target, sim::FluidSettings{flow.gridX, flow.gridY, canvas.width, canvas.height}, choice.drive);
+        m_document.gather(tr("Gather into %1").arg(choice.name), drive, choice.duration);
+        m_playAction->setChecked(true);
+    } catch (const std::invalid_argument& e) {
+        m_report(tr("Cannot gather"), QString::fromUtf8(e.what()));
+    }
 }
 
 void MainWindow::chooseImport()

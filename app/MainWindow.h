@@ -92,6 +92,7 @@ private:
     void copySvg();
     void chooseImport();
     void choosePattern();
+    void chooseGather();
     void spatter(QPointF center, double spread);
     std::vector<sim::Polygon> textOutlines(const QString& text, QPointF baselineStart) const;
     void previewText();

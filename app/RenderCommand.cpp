@@ -9,6 +9,7 @@
 #include "model/AtomicFile.h"
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
+#include "sim/Coverage.h"
 #include "sim/Crossings.h"
 #include "sim/opencl/OpenClSimulation.h"
 #include "render/Exporter.h"
@@ -20,7 +21,9 @@
 #include <QJsonObject>
 #include <QTextStream>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 
@@ -45,8 +48,8 @@ model::SimulationFactory backendFactory(const RenderOptions& options, QString& n
     };
 }
 
-QString writeStats(const QString& path, const model::Drawing& drawing, const RunTotals& totals,
-                   const sim::Simulation& simulation, model::FileBatch& batch)
+QString writeStats(const QString& path, const model::Scene& scene, const model::Drawing& drawing,
+                   const RunTotals& totals, const sim::Simulation& simulation, model::FileBatch& batch)
 {
     QJsonArray regions;
     for (const model::DrawnRegion& r : drawing.regions) {
@@ -59,9 +62,24 @@ QString writeStats(const QString& path, const model::Drawing& drawing, const Run
         regions.append(QJsonObject{{"name", r.name}, {"vertices", count}, {"area", sim::filledArea(r.contours)},
                                    {"perimeter", length}});
     }
+    // How well the ink fills each gather's target at the end: intersection over union on a lattice
+    // of 512 points across the canvas's larger side.
+    const model::Canvas& canvas = scene.canvas;
+    const double across = 512.0 / std::max(canvas.width, canvas.height);
+    const sim::CellLattice lattice{int(std::ceil(canvas.width * across)), int(std::ceil(canvas.height * across)),
+                                   canvas.width, canvas.height};
+    std::vector<std::vector<sim::Polygon>> ink;
+    for (const model::DrawnRegion& r : drawing.regions)
+        ink.push_back(r.contours);
+    QJsonArray gathers;
+    for (const model::Stroke& stroke : scene.strokes)
+        if (const auto* gather = std::get_if<model::GatherStroke>(&stroke))
+            gathers.append(QJsonObject{{"time", gather->time},
+                                       {"target_overlap", sim::intersectionOverUnion(ink, gather->contours, lattice)}});
     const QJsonObject root{
         {"backend", QString::fromStdString(simulation.backendName())},
         {"regions", regions},
+        {"gathers", gathers},
         {"totals", QJsonObject{{"steps", totals.steps},
                                {"vertices", qint64(simulation.vertexCount())},
                                {"vertex_steps", totals.vertexSteps},
@@ -261,7 +279,7 @@ int renderCommand(const QStringList& arguments)
                 error = render::exportDrawing(drawing, out, options->exportOptions, batch);
         }
         if (error.isEmpty() && !options->statsFile.isEmpty() && !interruptRequested())
-            error = writeStats(options->statsFile, drawing, totals, runner.simulation(), batch);
+            error = writeStats(options->statsFile, runner.scene(), drawing, totals, runner.simulation(), batch);
         if (error.isEmpty() && !interruptRequested() && (error = batch.commit()).isEmpty()) {
             for (const QString& out : options->outputs)
                 QTextStream(stdout) << "wrote " << out << '\n';

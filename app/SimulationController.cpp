@@ -90,6 +90,11 @@ void SimulationController::stylus(const std::vector<sim::StylusSegment>& pens)
     post([pens](SimulationWorker& w) { w.stylus(pens); });
 }
 
+void SimulationController::gather(const std::shared_ptr<const sim::TargetDrive>& drive, double duration)
+{
+    post([drive, duration](SimulationWorker& w) { w.gather(drive, duration); });
+}
+
 void SimulationController::setPlaying(bool playing)
 {
     m_playing = playing;

@@ -27,6 +27,7 @@ public:
     void drop(sim::Vec2 center, double radius) override;
     void applyMap(const sim::ExactMap& map) override;
     void stylus(const std::vector<sim::StylusSegment>& pens) override;
+    void gather(const std::shared_ptr<const sim::TargetDrive>& drive, double duration) override;
     std::uint64_t requestCount() const override { return m_requests; }
 
     void setPlaying(bool playing);

@@ -67,6 +67,7 @@ void SimulationWorker::load(const model::Scene& scene, const model::EngineSettin
     m_script.emplace(scene);
     m_steps = 0;
     m_pen.clear();
+    m_gather.reset();
     try {
         if (start) {
             build(settings, start->wait().get());
@@ -126,7 +127,8 @@ void SimulationWorker::snapshot(const model::StateSlotPtr& into)
 void SimulationWorker::restore(const model::StateSlotPtr& from)
 {
     const model::StatePtr state = from->wait();
-    m_pen.clear();  // the pen acted on the state being replaced
+    m_pen.clear();  // the pen and a gather acted on the state being replaced
+    m_gather.reset();
     if (!m_simulation) {  // its load failed: the state brings the work back
         build(m_settings, state.get());
         return;
@@ -165,6 +167,20 @@ void SimulationWorker::applyMap(const sim::ExactMap& map)
 {
     if (m_simulation && !m_simulation->applyMap(map))
         stopWith(tr("vertex limit reached (%1 vertices)").arg(m_simulation->vertexCount()));
+}
+
+void SimulationWorker::gather(const std::shared_ptr<const sim::TargetDrive>& drive, double duration)
+{
+    if (m_simulation)
+        m_gather = Gather{drive, m_simulation->time() + duration};
+}
+
+void SimulationWorker::driveGather()
+{
+    if (m_gather && m_simulation->time() < m_gather->until)
+        m_simulation->drive(m_gather->drive->force(m_simulation->regions()));
+    else
+        m_gather.reset();
 }
 
 void SimulationWorker::stylus(const std::vector<sim::StylusSegment>& pens)
@@ -246,6 +262,8 @@ void SimulationWorker::step()
     try {
         bool limit = m_script->applyTools(*m_simulation, t, t + dt);
         m_script->applyStylus(*m_simulation, t, t + dt);
+        m_script->applyGather(*m_simulation, t);
+        driveGather();
         feedPen();
         limit = m_simulation->step(dt).vertexLimitReached || limit;
         ++m_steps;
@@ -280,6 +298,7 @@ void SimulationWorker::stopWith(const QString& message)
 {
     m_stroking = false;
     m_pen.clear();
+    m_gather.reset();
     if (m_playing) {
         m_playing = false;
         emit playingChanged(false);

@@ -43,6 +43,8 @@ public:
     // and leave the water idle for three, and a viscous fluid would barely follow the pen. Pens
     // given together (a comb's tines) push in the same steps; later ones after them.
     void stylus(const std::vector<sim::StylusSegment>& pens);
+    // SimulationPort::gather: each step until then drives the fluid from the ink as it is.
+    void gather(const std::shared_ptr<const sim::TargetDrive>& drive, double duration);
     void setPlaying(bool playing);
     // While a stylus stroke is drawn the simulation runs even when paused, so that the water
     // answers the pen; it stops again with the stroke unless playing.
@@ -71,6 +73,7 @@ private:
     void build(const model::EngineSettings& settings, const sim::SimulationState* state);
     bool running() const { return m_playing || m_stroking; }
     void feedPen();
+    void driveGather();
     void onRunningChanged(bool wasRunning);
     void step();
     void scheduleStep();
@@ -90,6 +93,12 @@ private:
     bool m_stroking = false;
     // Pen input not yet fed: for each step to come, the parts of the pens' moves it takes.
     std::deque<std::vector<sim::StylusSegment>> m_pen;
+    // The app's gather under way (SimulationPort::gather), until the simulated time `until`.
+    struct Gather {
+        std::shared_ptr<const sim::TargetDrive> drive;
+        double until;
+    };
+    std::optional<Gather> m_gather;
     bool m_velocityWanted = false;
     std::uint64_t m_handled = 0;   // requests done
     std::int64_t m_steps = 0;

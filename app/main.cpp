@@ -1,12 +1,15 @@
 // vectorfluid: with no command (or a file), the desktop app; `render` and `devices` run headless
 // (no display needed, no QApplication), as do the program's own options (--help, --version).
+// `render` sets text (a gather's target) with the font database, which needs a QGuiApplication:
+// it gets one on the offscreen platform.
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 
-#include <QCoreApplication>
+#include <QGuiApplication>
 #include <QTextStream>
 
 #include <cstring>
+#include <memory>
 
 namespace {
 
@@ -52,10 +55,14 @@ int main(int argc, char** argv)
         return vf::app::guiMain(argc, argv);
 
     qInstallMessageHandler(dropQtMessages);
-    QCoreApplication app(argc, argv);
+    const bool render = std::strcmp(argv[1], "render") == 0;
+    if (render)
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    const std::unique_ptr<QCoreApplication> app =
+        render ? std::make_unique<QGuiApplication>(argc, argv) : std::make_unique<QCoreApplication>(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("vectorfluid"));
     QStringList arguments = QCoreApplication::arguments().mid(1);
-    if (arguments.front() == QLatin1String("render"))
+    if (render)
         return vf::app::renderCommand(arguments.mid(1));
     if (arguments.front() == QLatin1String("devices"))
         return vf::app::devicesCommand(arguments.mid(1));
