@@ -10,6 +10,10 @@
 
 namespace vf::render {
 
+// Writers trust their input; everything they could choke on is turned away here, before a file is
+// touched. Returns an empty string or what is wrong (without the path).
+[[nodiscard]] QString checkExport(const model::Drawing& drawing, const ExportOptions& options);
+
 [[nodiscard]] QString writeSvg(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
 [[nodiscard]] QString writePdf(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
 [[nodiscard]] QString writeEps(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
