@@ -28,7 +28,7 @@ const char* const animateUsage =
     "usage: vectorfluid animate SCENE --out FILE [--start S] [--end S] [--fps N] [--width N]\n"
     "                           [--transparent] [--polyline] [--backend reference|opencl] [--device N]\n"
     "Plays SCENE headless and writes the time from --start to --end as an animation: FILE.json\n"
-    "(Lottie) or FILE.svg (animated SVG).\n";
+    "(Lottie), FILE.svg (animated SVG), FILE.mp4 or FILE.gif (video, through ffmpeg).\n";
 
 struct AnimateOptions {
     QString scene;
@@ -43,12 +43,12 @@ struct AnimateOptions {
 
 void addOptions(QCommandLineParser& parser)
 {
-    parser.addOption({QStringLiteral("out"), QStringLiteral("The animation: .json (Lottie) or .svg (animated SVG)."), QStringLiteral("FILE")});
+    parser.addOption({QStringLiteral("out"), QStringLiteral("The animation: .json (Lottie), .svg (animated SVG), .mp4 or .gif."), QStringLiteral("FILE")});
     parser.addOption({QStringLiteral("start"), QStringLiteral("Seconds of scene time where the animation starts (default 0)."), QStringLiteral("S")});
     parser.addOption({QStringLiteral("end"), QStringLiteral("Seconds of scene time where it ends (default: the scene's time.steps x time.dt)."), QStringLiteral("S")});
     parser.addOption({QStringLiteral("fps"), QStringLiteral("Frames per second (default 30)."), QStringLiteral("N")});
     parser.addOption({QStringLiteral("width"), QStringLiteral("Width in points, which Lottie and video take as pixels (default 576)."), QStringLiteral("N")});
-    parser.addOption({QStringLiteral("transparent"), QStringLiteral("Leave the background out.")});
+    parser.addOption({QStringLiteral("transparent"), QStringLiteral("Leave the background out (not in .mp4).")});
     parser.addOption({QStringLiteral("polyline"), QStringLiteral("Write the vertices as they are, not fitted Béziers.")});
     parser.addOption({QStringLiteral("backend"), QStringLiteral("The simulation backend (default: OpenCL where a device exists)."), QStringLiteral("reference|opencl")});
     parser.addOption({QStringLiteral("device"), QStringLiteral("The OpenCL device, numbered as `vectorfluid devices` lists them."), QStringLiteral("N")});
@@ -71,7 +71,7 @@ std::optional<AnimateOptions> animateOptions(const QCommandLineParser& parser, Q
     else if (parser.values(QStringLiteral("out")).size() > 1)
         error = QStringLiteral("only one --out may be given");
     else if (!render::isAnimationSuffix(value("out")))
-        error = QStringLiteral("--out %1: the format must be .json or .svg").arg(value("out"));
+        error = QStringLiteral("--out %1: the format must be .json, .svg, .mp4 or .gif").arg(value("out"));
     if (error.isEmpty() && isSet("start")) {
         bool ok = false;
         o.start = value("start").toDouble(&ok);

@@ -17,11 +17,14 @@ using Writer = QString (*)(const Animation&, const ExportOptions&, const Animati
 struct Format {
     const char* suffix;  // lower case, without the dot
     Writer write;
+    bool transparency;   // can leave the background out
 };
 
 constexpr std::array kFormats{
-    Format{"json", writeLottie},
-    Format{"svg", writeAnimatedSvg},
+    Format{"json", writeLottie, true},
+    Format{"svg", writeAnimatedSvg, true},
+    Format{"mp4", writeMp4, false},
+    Format{"gif", writeGif, true},
 };
 
 const Format* formatFor(const QString& path)
@@ -79,9 +82,12 @@ QString exportAnimation(const Animation& animation, const QString& path, const E
 {
     const Format* format = formatFor(path);
     if (!format)
-        return path + QStringLiteral(": unknown animation format (use .json for Lottie or .svg)");
+        return path + QStringLiteral(": unknown animation format (use .json, .svg, .mp4 or .gif)");
     if (const QString error = checkAnimation(animation); !error.isEmpty())
         return path + QStringLiteral(": ") + error;
+    if (!options.background && !format->transparency)
+        return path + QStringLiteral(": %1 has no transparency; leave the background in")
+                          .arg(QString::fromLatin1(format->suffix).toUpper());
     return model::saveAtomically(path, [&](QIODevice& file) {
         return format->write(animation, options, progress, file);
     });

@@ -1,6 +1,7 @@
 #pragma once
 // Animation exports: a sequence of frames written as one file, the format following the suffix:
-// .json (Lottie) or .svg (animated SVG, SMIL).
+// .json (Lottie), .svg (animated SVG, SMIL), .mp4 (H.264) or .gif, the videos through the ffmpeg
+// command-line tool.
 #include "model/Drawing.h"
 #include "render/Exporter.h"
 
@@ -26,7 +27,7 @@ using AnimationProgress = std::function<bool(int framesDone)>;
 
 // Writes the animation to `path` atomically (model::saveAtomically). `options` as for a still
 // export: the page size (Lottie's width and height in pixels are its points), the Bézier fit,
-// `dpi` for video, `background` false for a transparent background where the format has one.
+// `dpi` for video, `background` false for a transparent background (not in MP4).
 // Every frame must have the first frame's canvas size. Returns an empty string, or one line
 // "path: what went wrong".
 [[nodiscard]] QString exportAnimation(const Animation& animation, const QString& path, const ExportOptions& options,

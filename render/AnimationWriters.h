@@ -21,4 +21,12 @@ using FrameWriter = std::function<QString(int index, const model::Drawing& frame
 [[nodiscard]] QString writeAnimatedSvg(const Animation& animation, const ExportOptions& options,
                                        const AnimationProgress& progress, QIODevice& out);
 
+// Video through the ffmpeg command-line tool (render/VideoWriter.cpp).
+[[nodiscard]] QString writeMp4(const Animation& animation, const ExportOptions& options,
+                               const AnimationProgress& progress, QIODevice& out);
+[[nodiscard]] QString writeGif(const Animation& animation, const ExportOptions& options,
+                               const AnimationProgress& progress, QIODevice& out);
+// The ffmpeg program on PATH, or an empty string.
+QString ffmpegProgram();
+
 } // namespace vf::render

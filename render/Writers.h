@@ -6,6 +6,7 @@
 #include "render/Exporter.h"
 
 #include <QIODevice>
+#include <QImage>
 #include <QString>
 
 namespace vf::render {
@@ -18,5 +19,9 @@ namespace vf::render {
 [[nodiscard]] QString writePdf(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
 [[nodiscard]] QString writeEps(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
 [[nodiscard]] QString writePng(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+
+// The picture writePng encodes (pngPixels in size, premultiplied ARGB); a null image when it is too
+// large to allocate.
+QImage paintedImage(const model::Drawing& drawing, const ExportOptions& options);
 
 } // namespace vf::render

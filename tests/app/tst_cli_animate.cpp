@@ -1,4 +1,4 @@
-// `vectorfluid animate`: the frames of a time range written as Lottie or animated SVG, with the
+// `vectorfluid animate`: the frames of a time range written as Lottie, animated SVG or video, with the
 // command line's conventions: one line on stderr and exit 2 for bad input, nothing written then,
 // a file that was there before left as it was.
 #include "CliRun.h"
@@ -7,6 +7,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -32,8 +33,10 @@ class TestCliAnimate : public QObject {
 private slots:
     void lottieOfATimeRange();
     void animatedSvgTransparent();
+    void mp4();
     void badInputWritesNothing_data();
     void badInputWritesNothing();
+    void videoWithoutFfmpeg();
 
 private:
     QTemporaryDir m_dir;
@@ -76,12 +79,24 @@ void TestCliAnimate::animatedSvgTransparent()
     QVERIFY(!svg.contains("Background"));
 }
 
+void TestCliAnimate::mp4()
+{
+    const QString out = m_dir.filePath(QStringLiteral("stirred.mp4"));
+    const CliResult r = runCli({QStringLiteral("animate"), kStirred, QStringLiteral("--out"), out, QStringLiteral("--end"),
+                                QStringLiteral("0.1"), QStringLiteral("--fps"), QStringLiteral("50"), QStringLiteral("--width"),
+                                QStringLiteral("100"), QStringLiteral("--backend"), QStringLiteral("reference")});
+    QVERIFY2(r.exitCode == 0 && r.err.isEmpty(), qPrintable(describe(r)));
+    QFile file(out);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.read(8).mid(4), QByteArray("ftyp"));  // an MP4 file; tests/render/tst_video probes the stream
+}
+
 void TestCliAnimate::badInputWritesNothing_data()
 {
     QTest::addColumn<QStringList>("arguments");  // after SCENE; --out is the file `kept`
     QTest::addColumn<QStringList>("saying");
     QTest::newRow("unknown format") << QStringList{QStringLiteral("--out"), QStringLiteral("kept.txt")}
-                                    << QStringList{QStringLiteral("kept.txt"), QStringLiteral(".json or .svg")};
+                                    << QStringList{QStringLiteral("kept.txt"), QStringLiteral(".json, .svg, .mp4 or .gif")};
     QTest::newRow("no --out") << QStringList{} << QStringList{QStringLiteral("no --out FILE given")};
     QTest::newRow("empty range") << QStringList{QStringLiteral("--out"), QStringLiteral("kept.json"), QStringLiteral("--start"),
                                                 QStringLiteral("0.3"), QStringLiteral("--end"), QStringLiteral("0.3")}
@@ -94,6 +109,8 @@ void TestCliAnimate::badInputWritesNothing_data()
                              << QStringList{QStringLiteral("--fps: '0'")};
     QTest::newRow("unknown option") << QStringList{QStringLiteral("--out"), QStringLiteral("kept.json"), QStringLiteral("--bogus")}
                                     << QStringList{QStringLiteral("unknown option --bogus (see vectorfluid animate --help)")};
+    QTest::newRow("transparent MP4") << QStringList{QStringLiteral("--out"), QStringLiteral("kept.mp4"), QStringLiteral("--transparent")}
+                                     << QStringList{QStringLiteral("MP4 has no transparency")};
     QTest::newRow("missing folder") << QStringList{QStringLiteral("--out"), QStringLiteral("no/such/folder/a.json")}
                                     << QStringList{QStringLiteral("does not exist")};
 }
@@ -103,7 +120,7 @@ void TestCliAnimate::badInputWritesNothing()
     QFETCH(QStringList, arguments);
     QFETCH(QStringList, saying);
     QTemporaryDir dir;
-    for (const QString& name : {QStringLiteral("kept.txt"), QStringLiteral("kept.json")}) {
+    for (const QString& name : {QStringLiteral("kept.txt"), QStringLiteral("kept.json"), QStringLiteral("kept.mp4")}) {
         QFile file(dir.filePath(name));
         QVERIFY(file.open(QIODevice::WriteOnly) && file.write("before") == 6);
     }
@@ -112,12 +129,28 @@ void TestCliAnimate::badInputWritesNothing()
             argument = dir.filePath(argument);
     const CliResult r = runCli(QStringList{QStringLiteral("animate"), kStirred} + arguments);
     CHECK_OK(checkOneLineError(r, saying));
-    for (const QString& name : {QStringLiteral("kept.txt"), QStringLiteral("kept.json")}) {
+    for (const QString& name : {QStringLiteral("kept.txt"), QStringLiteral("kept.json"), QStringLiteral("kept.mp4")}) {
         QFile file(dir.filePath(name));
         QVERIFY(file.open(QIODevice::ReadOnly));
         QCOMPARE(file.readAll(), QByteArray("before"));
     }
-    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 2);
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 3);
+}
+
+// Video needs the ffmpeg program: without it on PATH, one line says so and nothing is written.
+void TestCliAnimate::videoWithoutFfmpeg()
+{
+    const QString out = m_dir.filePath(QStringLiteral("no-ffmpeg.mp4"));
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("PATH"), m_dir.path());  // a folder without ffmpeg
+    process.setProcessEnvironment(environment);
+    process.start(kBinary, {QStringLiteral("animate"), kStirred, QStringLiteral("--out"), out, QStringLiteral("--end"),
+                            QStringLiteral("0.02"), QStringLiteral("--backend"), QStringLiteral("reference")});
+    QVERIFY(process.waitForFinished(60000));
+    const CliResult r{process.exitCode(), process.readAllStandardOutput(), process.readAllStandardError()};
+    CHECK_OK(checkOneLineError(r, {out, QStringLiteral("ffmpeg is not installed")}));
+    QVERIFY(!QFile::exists(out));
 }
 
 QTEST_GUILESS_MAIN(TestCliAnimate)
