@@ -25,14 +25,18 @@ namespace vf::app {
 namespace {
 
 const char* const animateUsage =
-    "usage: vectorfluid animate SCENE --out FILE [--start S] [--end S] [--fps N] [--width N]\n"
-    "                           [--transparent] [--polyline] [--backend reference|opencl] [--device N]\n"
+    "usage: vectorfluid animate SCENE (--out FILE | --frames DIR [--frame-format F]) [--start S] [--end S]\n"
+    "                           [--fps N] [--width N] [--transparent] [--polyline]\n"
+    "                           [--backend reference|opencl] [--device N]\n"
     "Plays SCENE headless and writes the time from --start to --end as an animation: FILE.json\n"
-    "(Lottie), FILE.svg (animated SVG), FILE.mp4 or FILE.gif (video, through ffmpeg).\n";
+    "(Lottie), FILE.svg (animated SVG), FILE.pdf (a page a frame), FILE.mp4 or FILE.gif (video,\n"
+    "through ffmpeg); or each frame as DIR/frame-NNNNNN.svg (or .pdf, .eps, .png).\n";
 
 struct AnimateOptions {
     QString scene;
     QString out;
+    QString framesDir;
+    QString frameFormat = QStringLiteral("svg");
     double start = 0;
     std::optional<double> end;  // default: the scene's time.steps × time.dt
     double fps = 30;
@@ -43,7 +47,9 @@ struct AnimateOptions {
 
 void addOptions(QCommandLineParser& parser)
 {
-    parser.addOption({QStringLiteral("out"), QStringLiteral("The animation: .json (Lottie), .svg (animated SVG), .mp4 or .gif."), QStringLiteral("FILE")});
+    parser.addOption({QStringLiteral("out"), QStringLiteral("The animation: .json (Lottie), .svg (animated SVG), .pdf, .mp4 or .gif."), QStringLiteral("FILE")});
+    parser.addOption({QStringLiteral("frames"), QStringLiteral("Instead, each frame as DIR/frame-NNNNNN.svg; DIR is created."), QStringLiteral("DIR")});
+    parser.addOption({QStringLiteral("frame-format"), QStringLiteral("The frames' format: svg (default), pdf, eps or png."), QStringLiteral("F")});
     parser.addOption({QStringLiteral("start"), QStringLiteral("Seconds of scene time where the animation starts (default 0)."), QStringLiteral("S")});
     parser.addOption({QStringLiteral("end"), QStringLiteral("Seconds of scene time where it ends (default: the scene's time.steps x time.dt)."), QStringLiteral("S")});
     parser.addOption({QStringLiteral("fps"), QStringLiteral("Frames per second (default 30)."), QStringLiteral("N")});
@@ -66,12 +72,16 @@ std::optional<AnimateOptions> animateOptions(const QCommandLineParser& parser, Q
         error = QStringLiteral("no scene file given");
     else if (scenes.size() > 1)
         error = QStringLiteral("only one scene file may be given (got %1 and %2)").arg(scenes[0], scenes[1]);
-    else if (!isSet("out"))
-        error = QStringLiteral("no --out FILE given");
-    else if (parser.values(QStringLiteral("out")).size() > 1)
-        error = QStringLiteral("only one --out may be given");
-    else if (!render::isAnimationSuffix(value("out")))
-        error = QStringLiteral("--out %1: the format must be .json, .svg, .mp4 or .gif").arg(value("out"));
+    else if (isSet("out") == isSet("frames"))
+        error = QStringLiteral("give either --out FILE or --frames DIR");
+    else if (parser.values(QStringLiteral("out")).size() > 1 || parser.values(QStringLiteral("frames")).size() > 1)
+        error = QStringLiteral("only one --out or --frames may be given");
+    else if (isSet("out") && !render::isAnimationSuffix(value("out")))
+        error = QStringLiteral("--out %1: the format must be .json, .svg, .pdf, .mp4 or .gif").arg(value("out"));
+    else if (isSet("frame-format") && !isSet("frames"))
+        error = QStringLiteral("--frame-format needs --frames DIR");
+    else if (isSet("frame-format") && !render::isExportSuffix(QStringLiteral("frame.") + value("frame-format")))
+        error = QStringLiteral("--frame-format: '%1' is not one of svg, pdf, eps, png").arg(value("frame-format"));
     if (error.isEmpty() && isSet("start")) {
         bool ok = false;
         o.start = value("start").toDouble(&ok);
@@ -101,10 +111,28 @@ std::optional<AnimateOptions> animateOptions(const QCommandLineParser& parser, Q
         return std::nullopt;
     o.scene = scenes.front();
     o.out = value("out");
+    o.framesDir = value("frames");
+    if (isSet("frame-format"))
+        o.frameFormat = value("frame-format");
     o.exportOptions.background = !isSet("transparent");
     o.exportOptions.bezier = !isSet("polyline");
     o.exportOptions.dpi = 72;  // raster frames: a pixel a point
     return o;
+}
+
+// Fails before any simulation when the output could not be written: its folder must exist (a
+// frames folder is created) and a temporary is created and removed where the file would go.
+QString checkOutput(const AnimateOptions& options, qint64 frames)
+{
+    QString file = options.out;
+    if (!options.framesDir.isEmpty()) {
+        if (!QDir().mkpath(options.framesDir))
+            return QStringLiteral("%1: cannot create the frames folder").arg(options.framesDir);
+        file = render::framePath(options.framesDir, 0, frames - 1, options.frameFormat);
+    }
+    if (!QFileInfo(file).absoluteDir().exists())
+        return QStringLiteral("%1: the folder %2 does not exist").arg(file, QFileInfo(file).absolutePath());
+    return model::checkWritable(file);
 }
 
 } // namespace
@@ -138,11 +166,7 @@ int animateCommand(const QStringList& arguments)
         printError(QStringLiteral("%1: %2").arg(options->scene, error));
         return BadInput;
     }
-    if (!QFileInfo(options->out).absoluteDir().exists()) {
-        printError(QStringLiteral("%1: the folder %2 does not exist").arg(options->out, QFileInfo(options->out).absolutePath()));
-        return BadInput;
-    }
-    if (const QString error = model::checkWritable(options->out); !error.isEmpty()) {
+    if (const QString error = checkOutput(*options, frames); !error.isEmpty()) {
         printError(error);
         return BadInput;
     }
@@ -168,20 +192,25 @@ int animateCommand(const QStringList& arguments)
             }
             return runner.drawing();
         }};
-        error = render::exportAnimation(animation, options->out, options->exportOptions, [&](int done) {
+        const render::AnimationProgress goOn = [&](int done) {
             framesDone = done;
             progress.update(done, runner.simulation().vertexCount());
             return limit.isEmpty() && !interruptRequested();
-        });
+        };
+        error = options->framesDir.isEmpty()
+                    ? render::exportAnimation(animation, options->out, options->exportOptions, goOn)
+                    : render::exportFrames(animation, options->framesDir, options->frameFormat, options->exportOptions, goOn);
     } catch (const std::exception& e) {
         error = QStringLiteral("%1: %2").arg(options->scene, QString::fromUtf8(e.what()));
     }
+    const QString kept = options->framesDir.isEmpty() ? QStringLiteral("no output written")
+                                                       : QStringLiteral("the frames written so far stay");
     if (!limit.isEmpty()) {
-        printError(QStringLiteral("%1: %2 at frame %3 of %4; no output written").arg(options->scene, limit).arg(framesDone).arg(frames));
+        printError(QStringLiteral("%1: %2 at frame %3 of %4; %5").arg(options->scene, limit).arg(framesDone).arg(frames).arg(kept));
         return LimitHit;
     }
     if (interruptRequested()) {
-        printError(QStringLiteral("%1: interrupted at frame %2 of %3; no output written").arg(options->scene).arg(framesDone).arg(frames));
+        printError(QStringLiteral("%1: interrupted at frame %2 of %3; %4").arg(options->scene).arg(framesDone).arg(frames).arg(kept));
         return Interrupted;
     }
     if (!error.isEmpty()) {
@@ -190,7 +219,7 @@ int animateCommand(const QStringList& arguments)
     }
     if (!notice.isEmpty())
         printError(notice);
-    QTextStream(stdout) << "wrote " << options->out << '\n';
+    QTextStream(stdout) << "wrote " << (options->framesDir.isEmpty() ? options->out : options->framesDir) << '\n';
     return Done;
 }
 

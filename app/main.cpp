@@ -15,8 +15,9 @@ const char* usage =
     "       vectorfluid render SCENE [--steps N] [--dt S] [--backend reference|opencl] [--device N]\n"
     "                          [--out FILE]... [--polyline] [--dpi N] [--frames DIR --every K]\n"
     "                          [--stats FILE.json] [--check-topology K]\n"
-    "       vectorfluid animate SCENE --out FILE [--start S] [--end S] [--fps N] [--width N]\n"
-    "                           [--transparent] [--polyline] [--backend reference|opencl] [--device N]\n"
+    "       vectorfluid animate SCENE (--out FILE | --frames DIR [--frame-format F]) [--start S] [--end S]\n"
+    "                           [--fps N] [--width N] [--transparent] [--polyline]\n"
+    "                           [--backend reference|opencl] [--device N]\n"
     "       vectorfluid devices\n"
     "`vectorfluid render --help`, `vectorfluid animate --help` and `vectorfluid devices --help`\n"
     "describe the commands.\n";

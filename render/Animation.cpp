@@ -4,8 +4,10 @@
 #include "render/AnimationWriters.h"
 #include "render/Writers.h"
 
+#include <QDir>
 #include <QFileInfo>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -23,6 +25,7 @@ struct Format {
 constexpr std::array kFormats{
     Format{"json", writeLottie, true},
     Format{"svg", writeAnimatedSvg, true},
+    Format{"pdf", writePdfPages, true},
     Format{"mp4", writeMp4, false},
     Format{"gif", writeGif, true},
 };
@@ -82,7 +85,7 @@ QString exportAnimation(const Animation& animation, const QString& path, const E
 {
     const Format* format = formatFor(path);
     if (!format)
-        return path + QStringLiteral(": unknown animation format (use .json, .svg, .mp4 or .gif)");
+        return path + QStringLiteral(": unknown animation format (use .json, .svg, .pdf, .mp4 or .gif)");
     if (const QString error = checkAnimation(animation); !error.isEmpty())
         return path + QStringLiteral(": ") + error;
     if (!options.background && !format->transparency)
@@ -91,6 +94,25 @@ QString exportAnimation(const Animation& animation, const QString& path, const E
     return model::saveAtomically(path, [&](QIODevice& file) {
         return format->write(animation, options, progress, file);
     });
+}
+
+QString framePath(const QString& folder, qint64 index, qint64 last, const QString& suffix)
+{
+    const int digits = std::max<int>(6, QString::number(last).size());
+    return QDir(folder).filePath(QStringLiteral("frame-%1.%2").arg(index, digits, 10, QLatin1Char('0')).arg(suffix));
+}
+
+QString exportFrames(const Animation& animation, const QString& folder, const QString& suffix,
+                     const ExportOptions& options, const AnimationProgress& progress)
+{
+    if (!isExportSuffix(QStringLiteral("frame.") + suffix))
+        return QStringLiteral("%1: unknown frame format %2 (use svg, pdf, eps or png)").arg(folder, suffix);
+    if (const QString error = checkAnimation(animation); !error.isEmpty())
+        return folder + QStringLiteral(": ") + error;
+    const QString error = forEachFrame(animation, options, progress, [&](int index, const model::Drawing& frame) {
+        return exportDrawing(frame, framePath(folder, index, animation.frames - 1, suffix), options);
+    });
+    return error == QLatin1String("cancelled") ? folder + QStringLiteral(": cancelled") : error;
 }
 
 bool isAnimationSuffix(const QString& path)

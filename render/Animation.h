@@ -1,7 +1,7 @@
 #pragma once
 // Animation exports: a sequence of frames written as one file, the format following the suffix:
-// .json (Lottie), .svg (animated SVG, SMIL), .mp4 (H.264) or .gif, the videos through the ffmpeg
-// command-line tool.
+// .json (Lottie), .svg (animated SVG, SMIL), .pdf (a page a frame), .mp4 (H.264) or .gif, the
+// videos through the ffmpeg command-line tool; or each frame a still file of its own.
 #include "model/Drawing.h"
 #include "render/Exporter.h"
 
@@ -34,5 +34,16 @@ using AnimationProgress = std::function<bool(int framesDone)>;
                                       const AnimationProgress& progress = {});
 
 bool isAnimationSuffix(const QString& path);
+
+// FOLDER/frame-NNNNNN.SUFFIX: the index padded to six digits, or to the width of `last`, so the
+// names sort in order.
+QString framePath(const QString& folder, qint64 index, qint64 last, const QString& suffix);
+
+// Each frame written as a still (exportDrawing) to framePath(folder, index, frames - 1, suffix),
+// `suffix` one of svg, pdf, eps, png. Each file is atomic and written as its frame comes, so an
+// export that fails or is cancelled part-way leaves the frames done before. Returns an empty
+// string, or one line "path: what went wrong" ("folder: cancelled").
+[[nodiscard]] QString exportFrames(const Animation& animation, const QString& folder, const QString& suffix,
+                                   const ExportOptions& options, const AnimationProgress& progress = {});
 
 } // namespace vf::render

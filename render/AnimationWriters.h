@@ -21,6 +21,9 @@ using FrameWriter = std::function<QString(int index, const model::Drawing& frame
 [[nodiscard]] QString writeAnimatedSvg(const Animation& animation, const ExportOptions& options,
                                        const AnimationProgress& progress, QIODevice& out);
 
+// A page a frame (render/CairoWriter.cpp).
+[[nodiscard]] QString writePdfPages(const Animation& animation, const ExportOptions& options,
+                                    const AnimationProgress& progress, QIODevice& out);
 // Video through the ffmpeg command-line tool (render/VideoWriter.cpp).
 [[nodiscard]] QString writeMp4(const Animation& animation, const ExportOptions& options,
                                const AnimationProgress& progress, QIODevice& out);

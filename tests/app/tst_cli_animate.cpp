@@ -4,10 +4,13 @@
 #include "CliRun.h"
 
 #include <QFile>
+#include <QImage>
+#include <QStandardPaths>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -34,6 +37,7 @@ private slots:
     void lottieOfATimeRange();
     void animatedSvgTransparent();
     void mp4();
+    void pdfPagesAndFrames();
     void badInputWritesNothing_data();
     void badInputWritesNothing();
     void videoWithoutFfmpeg();
@@ -91,13 +95,39 @@ void TestCliAnimate::mp4()
     QCOMPARE(file.read(8).mid(4), QByteArray("ftyp"));  // an MP4 file; tests/render/tst_video probes the stream
 }
 
+// A PDF of a page a frame, and the same frames as PNG files of their own.
+void TestCliAnimate::pdfPagesAndFrames()
+{
+    const QString pdf = m_dir.filePath(QStringLiteral("stirred.pdf"));
+    const QStringList range{QStringLiteral("--end"), QStringLiteral("0.1"), QStringLiteral("--fps"), QStringLiteral("30"),
+                            QStringLiteral("--width"), QStringLiteral("100"), QStringLiteral("--backend"), QStringLiteral("reference")};
+    CliResult r = runCli(QStringList{QStringLiteral("animate"), kStirred, QStringLiteral("--out"), pdf} + range);
+    QVERIFY2(r.exitCode == 0 && r.err.isEmpty(), qPrintable(describe(r)));
+    const QString pdfinfo = QStandardPaths::findExecutable(QStringLiteral("pdfinfo"));
+    if (!pdfinfo.isEmpty()) {
+        r = runProgram(pdfinfo, {pdf});
+        QVERIFY2(r.exitCode == 0 && QString::fromUtf8(r.out).contains(QRegularExpression(QStringLiteral("Pages: +3\\n"))),
+                 qPrintable(describe(r)));
+    }
+    const QString frames = m_dir.filePath(QStringLiteral("frames"));
+    r = runCli(QStringList{QStringLiteral("animate"), kStirred, QStringLiteral("--frames"), frames, QStringLiteral("--frame-format"),
+                           QStringLiteral("png")} + range);
+    QVERIFY2(r.exitCode == 0 && r.err.isEmpty(), qPrintable(describe(r)));
+    QCOMPARE(QDir(frames).entryList(QDir::Files),
+             (QStringList{QStringLiteral("frame-000000.png"), QStringLiteral("frame-000001.png"), QStringLiteral("frame-000002.png")}));
+    QCOMPARE(QImage(QDir(frames).filePath(QStringLiteral("frame-000002.png"))).size(), QSize(100, 80));
+}
+
 void TestCliAnimate::badInputWritesNothing_data()
 {
     QTest::addColumn<QStringList>("arguments");  // after SCENE; --out is the file `kept`
     QTest::addColumn<QStringList>("saying");
     QTest::newRow("unknown format") << QStringList{QStringLiteral("--out"), QStringLiteral("kept.txt")}
-                                    << QStringList{QStringLiteral("kept.txt"), QStringLiteral(".json, .svg, .mp4 or .gif")};
-    QTest::newRow("no --out") << QStringList{} << QStringList{QStringLiteral("no --out FILE given")};
+                                    << QStringList{QStringLiteral("kept.txt"), QStringLiteral(".json, .svg, .pdf, .mp4 or .gif")};
+    QTest::newRow("no --out") << QStringList{} << QStringList{QStringLiteral("give either --out FILE or --frames DIR")};
+    QTest::newRow("bad frame format") << QStringList{QStringLiteral("--frames"), QStringLiteral("kept-frames"), QStringLiteral("--frame-format"),
+                                                     QStringLiteral("gif")}
+                                      << QStringList{QStringLiteral("--frame-format: 'gif'")};
     QTest::newRow("empty range") << QStringList{QStringLiteral("--out"), QStringLiteral("kept.json"), QStringLiteral("--start"),
                                                 QStringLiteral("0.3"), QStringLiteral("--end"), QStringLiteral("0.3")}
                                  << QStringList{QStringLiteral("0 frames")};
