@@ -7,11 +7,11 @@
 #include "app/RenderOptions.h"
 #include "app/RenderProgress.h"
 #include "app/RenderSignals.h"
+#include "app/SceneFrames.h"
 #include "model/AtomicFile.h"
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
 #include "render/Animation.h"
-#include "sim/opencl/OpenClSimulation.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -154,12 +154,12 @@ int animateCommand(const QStringList& arguments)
         printError(read.error);
         return BadInput;
     }
-    const double dt = read.scene.time.dt;
-    const double end = options->end.value_or(double(read.scene.time.steps) * dt);
-    const qint64 frames = std::llround((end - options->start) * options->fps);
+    const FrameRange range{options->start, options->end.value_or(double(read.scene.time.steps) * read.scene.time.dt),
+                           options->fps};
+    const qint64 frames = frameCount(range);
     if (frames < 1 || frames > 100'000'000) {
         printError(QStringLiteral("%1 to %2 s at %3 fps is %4 frames (1 to 100000000)")
-                       .arg(options->start).arg(end).arg(options->fps).arg(frames));
+                       .arg(range.start).arg(range.end).arg(range.fps).arg(frames));
         return BadInput;
     }
     if (const QString error = checkMemory(read.scene, RenderOptions{}, availableMemory()); !error.isEmpty()) {
@@ -179,22 +179,12 @@ int animateCommand(const QStringList& arguments)
             return makeBackend(settings, options->backend, options->device, notice);
         });
         RenderProgress progress(frames, QStringLiteral("frame"));
-        // Frame k shows the scene at start + k / fps, to the nearest step.
-        const render::Animation animation{int(frames), options->fps, [&](int index) {
-            const qint64 steps = std::llround((options->start + index / options->fps) / dt);
-            while (runner.stepsDone() < steps && limit.isEmpty() && !interruptRequested()) {
-                try {
-                    if (runner.step(dt).vertexLimitReached)
-                        limit = vertexLimitLabel(runner.simulation()) + QStringLiteral(" reached");
-                } catch (const sim::opencl::DeviceError& e) {
-                    limit = QString::fromUtf8(e.what()).section('\n', 0, 0);
-                }
-            }
-            return runner.drawing();
-        }};
+        SceneFrames sceneFrames(runner, range, interruptRequested);
+        const render::Animation animation = sceneFrames.animation();
         const render::AnimationProgress goOn = [&](int done) {
             framesDone = done;
             progress.update(done, runner.simulation().vertexCount());
+            limit = sceneFrames.limit();
             return limit.isEmpty() && !interruptRequested();
         };
         error = options->framesDir.isEmpty()

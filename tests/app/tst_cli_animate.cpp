@@ -41,6 +41,7 @@ private slots:
     void badInputWritesNothing_data();
     void badInputWritesNothing();
     void videoWithoutFfmpeg();
+    void vertexLimitWritesNothing();
 
 private:
     QTemporaryDir m_dir;
@@ -183,5 +184,16 @@ void TestCliAnimate::videoWithoutFfmpeg()
     QVERIFY(!QFile::exists(out));
 }
 
+// A limit that stops the simulation part-way stops the animation: exit 3, one line, no file.
+void TestCliAnimate::vertexLimitWritesNothing()
+{
+    const QString out = m_dir.filePath(QStringLiteral("limit.json"));
+    const CliResult r = runCli({QStringLiteral("animate"), QStringLiteral(VF_TEST_DATA "/scenes/vertex-limit.vfscene"),
+                                QStringLiteral("--out"), out, QStringLiteral("--backend"), QStringLiteral("reference")});
+    CHECK_OK(checkOneLineError(r, {QStringLiteral("max_vertices (200) reached at frame"), QStringLiteral("no output written")}, 3));
+    QVERIFY(!QFile::exists(out));
+}
+
 QTEST_GUILESS_MAIN(TestCliAnimate)
 #include "tst_cli_animate.moc"
+
