@@ -17,6 +17,7 @@
 #include <QFileInfo>
 #include <QTextStream>
 
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -47,17 +48,23 @@ struct AnimateOptions {
 
 void addOptions(QCommandLineParser& parser)
 {
-    parser.addOption({QStringLiteral("out"), QStringLiteral("The animation: .json (Lottie), .svg (animated SVG), .pdf, .mp4 or .gif."), QStringLiteral("FILE")});
-    parser.addOption({QStringLiteral("frames"), QStringLiteral("Instead, each frame as DIR/frame-NNNNNN.svg; DIR is created."), QStringLiteral("DIR")});
-    parser.addOption({QStringLiteral("frame-format"), QStringLiteral("The frames' format: svg (default), pdf, eps or png."), QStringLiteral("F")});
-    parser.addOption({QStringLiteral("start"), QStringLiteral("Seconds of scene time where the animation starts (default 0)."), QStringLiteral("S")});
-    parser.addOption({QStringLiteral("end"), QStringLiteral("Seconds of scene time where it ends (default: the scene's time.steps x time.dt)."), QStringLiteral("S")});
-    parser.addOption({QStringLiteral("fps"), QStringLiteral("Frames per second (default 30)."), QStringLiteral("N")});
-    parser.addOption({QStringLiteral("width"), QStringLiteral("Width in points, which Lottie and video take as pixels (default 576)."), QStringLiteral("N")});
-    parser.addOption({QStringLiteral("transparent"), QStringLiteral("Leave the background out (not in .mp4).")});
-    parser.addOption({QStringLiteral("polyline"), QStringLiteral("Write the vertices as they are, not fitted Béziers.")});
-    parser.addOption({QStringLiteral("backend"), QStringLiteral("The simulation backend (default: OpenCL where a device exists)."), QStringLiteral("reference|opencl")});
-    parser.addOption({QStringLiteral("device"), QStringLiteral("The OpenCL device, numbered as `vectorfluid devices` lists them."), QStringLiteral("N")});
+    // name, value name (none for a flag), description
+    const std::array<std::array<const char*, 3>, 11> options{{
+        {"out", "FILE", "The animation: .json (Lottie), .svg (animated SVG), .pdf, .mp4 or .gif."},
+        {"frames", "DIR", "Instead, each frame as DIR/frame-NNNNNN.svg; DIR is created."},
+        {"frame-format", "F", "The frames' format: svg (default), pdf, eps or png."},
+        {"start", "S", "Seconds of scene time where the animation starts (default 0)."},
+        {"end", "S", "Seconds of scene time where it ends (default: the scene's time.steps x time.dt)."},
+        {"fps", "N", "Frames per second (default 30)."},
+        {"width", "N", "Width in points, which Lottie and video take as pixels (default 576)."},
+        {"transparent", "", "Leave the background out (not in .mp4)."},
+        {"polyline", "", "Write the vertices as they are, not fitted Béziers."},
+        {"backend", "reference|opencl", "The simulation backend (default: OpenCL where a device exists)."},
+        {"device", "N", "The OpenCL device, numbered as `vectorfluid devices` lists them."},
+    }};
+    for (const auto& [name, valueName, description] : options)
+        parser.addOption(QCommandLineOption(QString::fromLatin1(name), QString::fromUtf8(description),
+                                            QString::fromLatin1(valueName)));
     parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("The scene file (.vfscene) to play."));
 }
 

@@ -156,7 +156,8 @@ void AnimationDialog::browse()
 void AnimationDialog::updateEnabled()
 {
     const FormatEntry* format = formatOf(m_path->text());
-    m_format->setText(format ? tr(format->name) : tr("unknown: the file must end in .json, .svg, .pdf, .mp4 or .gif"));
+    m_format->setText(format ? QString::fromUtf8(format->name)
+                             : tr("unknown: the file must end in .json, .svg, .pdf, .mp4 or .gif"));
     const bool idle = !running();
     const qint64 frames = frameCount({m_start->value(), m_end->value(), double(m_fps->value())});
     for (QWidget* input : std::initializer_list<QWidget*>{m_path, m_start, m_end, m_fps, m_width})
