@@ -65,6 +65,7 @@ AnimationDialog::AnimationDialog(model::Scene scene, QWidget* parent) : QDialog(
     setWindowTitle(tr("Export Animation"));
     m_path = new QLineEdit(QDir(documentsFolder()).filePath(QStringLiteral("animation.json")));
     m_path->setObjectName(QStringLiteral("path"));
+    m_path->setMinimumWidth(40 * m_path->fontMetrics().averageCharWidth());
     auto* browse = new QPushButton(tr("Browse…"));
     browse->setObjectName(QStringLiteral("browse"));
     browse->setAutoDefault(false);
@@ -105,7 +106,11 @@ AnimationDialog::AnimationDialog(model::Scene scene, QWidget* parent) : QDialog(
     m_close = buttons->addButton(QDialogButtonBox::Close);
     m_close->setObjectName(QStringLiteral("close"));
 
+    auto* note = new QLabel(tr("Plays the document's scene from its start, with its timed drops and strokes; "
+                               "ink added by hand is not in it."));
+    note->setWordWrap(true);
     auto* form = new QFormLayout(this);
+    form->addRow(note);
     form->addRow(tr("File:"), pathRow);
     form->addRow(tr("Format:"), m_format);
     form->addRow(tr("From:"), m_start);
