@@ -20,14 +20,15 @@ struct Format {
     const char* suffix;  // lower case, without the dot
     Writer write;
     bool transparency;   // can leave the background out
+    bool ffmpeg;         // runs the ffmpeg program
 };
 
 constexpr std::array kFormats{
-    Format{"json", writeLottie, true},
-    Format{"svg", writeAnimatedSvg, true},
-    Format{"pdf", writePdfPages, true},
-    Format{"mp4", writeMp4, false},
-    Format{"gif", writeGif, true},
+    Format{"json", writeLottie, true, false},
+    Format{"svg", writeAnimatedSvg, true, false},
+    Format{"pdf", writePdfPages, true, false},
+    Format{"mp4", writeMp4, false, true},
+    Format{"gif", writeGif, true, true},
 };
 
 const Format* formatFor(const QString& path)
@@ -91,6 +92,8 @@ QString exportAnimation(const Animation& animation, const QString& path, const E
     if (!options.background && !format->transparency)
         return path + QStringLiteral(": %1 has no transparency; leave the background in")
                           .arg(QString::fromLatin1(format->suffix).toUpper());
+    if (format->ffmpeg && ffmpegProgram().isEmpty())  // before any frame is played
+        return path + QStringLiteral(": ffmpeg is not installed (not found on PATH); .mp4 and .gif need it");
     return model::saveAtomically(path, [&](QIODevice& file) {
         return format->write(animation, options, progress, file);
     });

@@ -52,9 +52,7 @@ QString ffmpegFailure(QProcess& process)
 QString writeVideo(const Animation& animation, const ExportOptions& options, const AnimationProgress& progress,
                    QIODevice& out, bool gif)
 {
-    const QString ffmpeg = ffmpegProgram();
-    if (ffmpeg.isEmpty())
-        return QStringLiteral("ffmpeg is not installed (not found on PATH); .mp4 and .gif need it");
+    const QString ffmpeg = ffmpegProgram();  // exportAnimation checked that there is one
     QTemporaryDir folder;
     if (!folder.isValid())
         return QStringLiteral("cannot create a temporary folder: %1").arg(folder.errorString());
