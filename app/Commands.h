@@ -10,6 +10,7 @@ namespace vf::app {
 enum ExitCode { Done = 0, BadInput = 2, LimitHit = 3, TopologyBroken = 4, Interrupted = 130 };
 
 int renderCommand(const QStringList& arguments);
+int animateCommand(const QStringList& arguments);
 int devicesCommand(const QStringList& arguments);
 // The desktop app (app/GuiMain.cpp): creates the QApplication, so it takes argc/argv.
 int guiMain(int argc, char** argv);

@@ -1,10 +1,11 @@
 // The main window: its actions, docks and menus, and what each user action does to the document
 // (import, export, tools, modes). Opening and saving are in MainWindowFiles.cpp; the pieces with
-// their own state live apart (Canvas, ExportDialog, RegionsDock, SimulationPanel, Recovery,
-// RecentFiles, ClipboardExport).
+// their own state live apart (Canvas, ExportDialog, AnimationDialog, RegionsDock, SimulationPanel,
+// Recovery, RecentFiles, ClipboardExport).
 // Past 500 lines because every action's slot is here, each short and each using the window's state.
 #include "app/MainWindow.h"
 
+#include "app/AnimationDialog.h"
 #include "app/ClipboardExport.h"
 #include "app/ExportDialog.h"
 #include "app/MarblingToolBar.h"
@@ -125,6 +126,7 @@ void MainWindow::createFileMenu()
     file->addSeparator();
     file->addAction(tr("&Import SVG…"), QKeySequence(Qt::CTRL | Qt::Key_I), this, &MainWindow::chooseImport);
     file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportPicture);
+    file->addAction(tr("Export &Animation…"), this, &MainWindow::exportAnimation);
     file->addAction(tr("&Copy as SVG"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C), this, &MainWindow::copySvg);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -596,6 +598,15 @@ void MainWindow::exportPicture()
     ExportDialog dialog(drawing(), this);
     if (dialog.exec() == QDialog::Accepted)
         statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(dialog.filePath())), 10000);
+}
+
+// The document's scene, copied: the dialog plays it in a simulation of its own.
+void MainWindow::exportAnimation()
+{
+    AnimationDialog dialog(m_document.scene(), this);
+    dialog.exec();
+    if (!dialog.writtenPath().isEmpty())
+        statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(dialog.writtenPath())), 10000);
 }
 
 void MainWindow::copySvg()

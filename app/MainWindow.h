@@ -89,6 +89,7 @@ private:
     bool saved(const QString& path, int opened, std::uint64_t revision, const QString& error);
     void open();
     void exportPicture();
+    void exportAnimation();
     void copySvg();
     void chooseImport();
     void choosePattern();

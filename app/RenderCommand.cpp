@@ -12,6 +12,7 @@
 #include "sim/Coverage.h"
 #include "sim/Crossings.h"
 #include "sim/opencl/OpenClSimulation.h"
+#include "render/Animation.h"
 #include "render/Exporter.h"
 
 #include <QDir>
@@ -90,13 +91,6 @@ QString writeStats(const QString& path, const model::Scene& scene, const model::
     return batch.write(path, [&json](QIODevice& file) { return model::writeAll(file, json); });
 }
 
-// frame-000042.svg: numbers padded to the same width (at least 6 digits), so names sort in order.
-QString framePath(const QString& dir, qint64 step, qint64 lastStep)
-{
-    const int digits = std::max<int>(6, QString::number(lastStep).size());
-    return QDir(dir).filePath(QStringLiteral("frame-%1.svg").arg(step, digits, 10, QLatin1Char('0')));
-}
-
 // The files written at the end: the pictures and the stats.
 QStringList finalFiles(const RenderOptions& options)
 {
@@ -119,7 +113,7 @@ QString checkOutputs(const RenderOptions& options, qint64 steps)
     if (!options.framesDir.isEmpty()) {
         if (!QDir().mkpath(options.framesDir))
             return QStringLiteral("%1: cannot create the frames folder").arg(options.framesDir);
-        files << framePath(options.framesDir, 0, steps);
+        files << render::framePath(options.framesDir, 0, steps, QStringLiteral("svg"));
     }
     for (const QString& file : files) {
         if (const QString error = model::checkWritable(file); !error.isEmpty())
@@ -235,7 +229,7 @@ int renderCommand(const QStringList& arguments)
         auto writeFrame = [&](qint64 step) {
             if (options->framesDir.isEmpty() || step % options->every != 0)
                 return QString();
-            return render::exportDrawing(runner.drawing(), framePath(options->framesDir, step, steps), options->exportOptions);
+            return render::exportDrawing(runner.drawing(), render::framePath(options->framesDir, step, steps, QStringLiteral("svg")), options->exportOptions);
         };
         const QString vertexLimit = vertexLimitLabel(runner.simulation()) + QStringLiteral(" reached");
         if (runner.vertexLimitReached()) {  // drops at t = 0 already took it there

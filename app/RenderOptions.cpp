@@ -11,11 +11,6 @@
 
 namespace vf::app {
 
-namespace {
-
-// Each option that takes a value: reads it into the options, or returns what is wrong with it.
-using Setter = std::function<QString(RenderOptions&, const QString&)>;
-
 QString wholeNumber(const QString& option, const QString& value, qint64 minimum, qint64 maximum, qint64& into)
 {
     bool ok = false;
@@ -33,6 +28,11 @@ QString positiveNumber(const QString& option, const QString& value, double maxim
         return {};
     return QStringLiteral("%1: '%2' is not a number in (0, %3]").arg(option, value).arg(maximum);
 }
+
+namespace {
+
+// Each option that takes a value: reads it into the options, or returns what is wrong with it.
+using Setter = std::function<QString(RenderOptions&, const QString&)>;
 
 struct ValueOption {
     QString name;  // without the dashes

@@ -24,6 +24,11 @@ struct RenderOptions {
     qint64 checkTopologyEvery = 0;  // --check-topology K: an exact crossing check every K steps; 0: none
 };
 
+// A command-line value read into `into`: an empty string, or one line naming the option, the value
+// and the range it must be in. Shared by the commands.
+QString wholeNumber(const QString& option, const QString& value, qint64 minimum, qint64 maximum, qint64& into);
+QString positiveNumber(const QString& option, const QString& value, double maximum, double& into);
+
 // The synopsis of `vectorfluid render` (docs/command-line.md).
 extern const char* const renderUsage;
 

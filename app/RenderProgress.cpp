@@ -31,7 +31,8 @@ void show(const QString& line)
 
 } // namespace
 
-RenderProgress::RenderProgress(qint64 steps) : m_steps(steps), m_enabled(isatty(STDERR_FILENO) == 1) {}
+RenderProgress::RenderProgress(qint64 steps, QString unit)
+    : m_steps(steps), m_unit(std::move(unit)), m_enabled(isatty(STDERR_FILENO) == 1) {}
 
 RenderProgress::~RenderProgress()
 {
@@ -46,7 +47,8 @@ void RenderProgress::update(qint64 step, std::size_t vertices)
         return;
     const double elapsed = std::chrono::duration<double>(now - m_start).count();
     const double left = elapsed / double(step) * double(m_steps - step);
-    show(QStringLiteral("step %1 of %2, %3 vertices, about %4 left")
+    show(QStringLiteral("%1 %2 of %3, %4 vertices, about %5 left")
+             .arg(m_unit)
              .arg(step)
              .arg(m_steps)
              .arg(qulonglong(vertices))

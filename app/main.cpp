@@ -1,4 +1,4 @@
-// vectorfluid: with no command (or a file), the desktop app; `render` and `devices` run headless
+// vectorfluid: with no command (or a file), the desktop app; `render`, `animate` and `devices` run headless
 // (no display needed, no QApplication), as do the program's own options (--help, --version).
 // `render` sets text (a gather's target) with the font database, which needs a QGuiApplication:
 // it gets one on the offscreen platform.
@@ -18,8 +18,12 @@ const char* usage =
     "       vectorfluid render SCENE [--steps N] [--dt S] [--backend reference|opencl] [--device N]\n"
     "                          [--out FILE]... [--polyline] [--dpi N] [--frames DIR --every K]\n"
     "                          [--stats FILE.json] [--check-topology K]\n"
+    "       vectorfluid animate SCENE (--out FILE | --frames DIR [--frame-format F]) [--start S] [--end S]\n"
+    "                           [--fps N] [--width N] [--transparent] [--polyline]\n"
+    "                           [--backend reference|opencl] [--device N]\n"
     "       vectorfluid devices\n"
-    "`vectorfluid render --help` and `vectorfluid devices --help` describe the commands.\n";
+    "`vectorfluid render --help`, `vectorfluid animate --help` and `vectorfluid devices --help`\n"
+    "describe the commands.\n";
 
 // On the command line stderr carries one line per error and nothing else (README). Qt's own
 // messages are about the program's insides (a font database, a platform plugin), so they are
@@ -32,7 +36,8 @@ void dropQtMessages(QtMsgType type, const QMessageLogContext&, const QString& me
 
 bool isHeadless(const char* argument)
 {
-    return argument[0] == '-' || std::strcmp(argument, "render") == 0 || std::strcmp(argument, "devices") == 0;
+    return argument[0] == '-' || std::strcmp(argument, "render") == 0 || std::strcmp(argument, "animate") == 0
+           || std::strcmp(argument, "devices") == 0;
 }
 
 // `vectorfluid --help`, `--version` and anything else that starts with a dash.
@@ -64,6 +69,8 @@ int main(int argc, char** argv)
     QStringList arguments = QCoreApplication::arguments().mid(1);
     if (render)
         return vf::app::renderCommand(arguments.mid(1));
+    if (arguments.front() == QLatin1String("animate"))
+        return vf::app::animateCommand(arguments.mid(1));
     if (arguments.front() == QLatin1String("devices"))
         return vf::app::devicesCommand(arguments.mid(1));
     return programOptions(arguments);

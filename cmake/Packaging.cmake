@@ -16,6 +16,7 @@ set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Qt's platform plugins (the window needs one) and the text tool's first typeface.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, fonts-dejavu-core")
-# The OpenCL backend needs a driver; without one, renders fall back to the reference backend.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "pocl-opencl-icd | opencl-icd")
+# The OpenCL backend needs a driver; without one, renders fall back to the reference backend. Video
+# export (.mp4, .gif) runs the ffmpeg program; without it that export says so.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "pocl-opencl-icd | opencl-icd, ffmpeg")
 include(CPack)

@@ -1,4 +1,4 @@
-// PDF and EPS through Cairo, streamed into the caller's device.
+// PDF and EPS through Cairo, streamed into the caller's device; an animation as a PDF of a page a frame.
 //
 // Cairo stores path coordinates in 24.8 fixed point. Drawing in canvas units through a scaling CTM
 // would quantise every vertex to 1/256 of the canvas, so we scale to page points ourselves: the
@@ -10,6 +10,7 @@
 #include "render/Writers.h"
 
 #include "model/AtomicFile.h"
+#include "render/AnimationWriters.h"
 #include "render/EpsBoundingBox.h"
 #include "render/Page.h"
 #include "render/PathEmitter.h"
@@ -129,6 +130,31 @@ QString writePdf(const model::Drawing& drawing, const ExportOptions& options, QI
     DeviceStream stream{out, {}};
     const SurfacePtr surface(cairo_pdf_surface_create_for_stream(DeviceStream::write, &stream, page.width, page.height));
     return render(surface.get(), drawing, options, stream.error);
+}
+
+QString writePdfPages(const Animation& animation, const ExportOptions& options, const AnimationProgress& progress,
+                      QIODevice& out)
+{
+    DeviceStream stream{out, {}};
+    SurfacePtr surface;
+    const QString error = forEachFrame(animation, options, progress, [&](int index, const model::Drawing& frame) {
+        if (index == 0) {
+            const Page page = pageFor(frame, options);
+            surface.reset(cairo_pdf_surface_create_for_stream(DeviceStream::write, &stream, page.width, page.height));
+        }
+        if (const cairo_status_t status = cairo_surface_status(surface.get()))
+            return describe(status, stream.error);
+        const ContextPtr context(cairo_create(surface.get()));
+        draw(context.get(), frame, options);
+        cairo_show_page(context.get());
+        const cairo_status_t status = cairo_status(context.get());
+        return status ? describe(status, stream.error) : QString();
+    });
+    if (!error.isEmpty())
+        return error;
+    cairo_surface_finish(surface.get());
+    const cairo_status_t status = cairo_surface_status(surface.get());
+    return status ? describe(status, stream.error) : QString();
 }
 
 QString writeEps(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out)

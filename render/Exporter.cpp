@@ -55,9 +55,14 @@ QString checkRegion(const model::DrawnRegion& region)
     return {};
 }
 
-// Writers trust their input; everything they could choke on is turned away here, before the file
-// is touched.
-QString check(const model::Drawing& drawing, const ExportOptions& options)
+QString failure(const QString& path, const QString& what)
+{
+    return path + QStringLiteral(": ") + what.simplified(); // one line, whatever the cause said
+}
+
+} // namespace
+
+QString checkExport(const model::Drawing& drawing, const ExportOptions& options)
 {
     if (!isPositive(drawing.width) || !isPositive(drawing.height))
         return QStringLiteral("canvas size %1 x %2 is not positive").arg(drawing.width).arg(drawing.height);
@@ -76,13 +81,6 @@ QString check(const model::Drawing& drawing, const ExportOptions& options)
     return {};
 }
 
-QString failure(const QString& path, const QString& what)
-{
-    return path + QStringLiteral(": ") + what.simplified(); // one line, whatever the cause said
-}
-
-} // namespace
-
 QString exportDrawing(const model::Drawing& drawing, const QString& path, const ExportOptions& options)
 {
     model::FileBatch batch;
@@ -97,7 +95,7 @@ QString exportDrawing(const model::Drawing& drawing, const QString& path, const 
     const Format* format = formatFor(path);
     if (!format)
         return failure(path, QStringLiteral("unknown export format (use .svg, .pdf, .eps or .png)"));
-    if (const QString error = check(drawing, options); !error.isEmpty())
+    if (const QString error = checkExport(drawing, options); !error.isEmpty())
         return failure(path, error);
     if (const Page page = pageFor(drawing, options);
         format->maxPageSide > 0 && std::max(page.width, page.height) > format->maxPageSide)

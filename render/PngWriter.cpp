@@ -86,16 +86,23 @@ RasterSize pngPixels(const model::Drawing& drawing, const ExportOptions& options
     return {pixels(page.width), pixels(page.height)};
 }
 
-QString writePng(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out)
+QImage paintedImage(const model::Drawing& drawing, const ExportOptions& options)
 {
-    const QSize size = pixelSize(drawing, options);
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    QImage image(pixelSize(drawing, options), QImage::Format_ARGB32_Premultiplied);
     if (image.isNull())
-        return QStringLiteral("image too large to allocate (%1 dpi)").arg(options.dpi);
+        return image;
     const int dotsPerMetre = static_cast<int>(std::lround(options.dpi / kMetresPerInch));
     image.setDotsPerMeterX(dotsPerMetre);
     image.setDotsPerMeterY(dotsPerMetre);
     paint(image, drawing, options);
+    return image;
+}
+
+QString writePng(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out)
+{
+    const QImage image = paintedImage(drawing, options);
+    if (image.isNull())
+        return QStringLiteral("image too large to allocate (%1 dpi)").arg(options.dpi);
     // Encoded in memory first: libpng reports a failed write by longjmp through Qt's encoder,
     // which leaks and loses the reason. The compressed file is small next to the image itself.
     QBuffer encoded;

@@ -43,9 +43,19 @@ sim::Polygon roundedContour(const sim::Polygon& contour, double scale)
 
 double svgCoordinateStep(const model::Drawing& drawing)
 {
-    // The slack keeps a side of exactly 10^n from landing one power lower through rounding in log10.
-    const double magnitude = std::floor(std::log10(std::max(drawing.width, drawing.height)) + 1e-9);
-    return std::pow(10.0, magnitude - 6);
+    return decimalStepBelow(1e-6 * std::max(drawing.width, drawing.height));
+}
+
+double decimalStepBelow(double length)
+{
+    // The slack keeps a length of exactly 10^n from landing one power lower through rounding in log10.
+    return std::pow(10.0, std::floor(std::log10(length) + 1e-9));
+}
+
+double roundedToStep(double value, double step)
+{
+    const double scale = scaleFor(step);
+    return scale == 0 ? value : rounded(value, scale);
 }
 
 RoundedRegion roundedRegion(const model::DrawnRegion& region, double step)

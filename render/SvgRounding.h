@@ -11,6 +11,14 @@ namespace vf::render {
 // 10^k for the largest integer k with 10^k <= 1e-6 * max(width, height).
 double svgCoordinateStep(const model::Drawing& drawing);
 
+// 10^k for the largest integer k with 10^k <= length (a positive length).
+double decimalStepBelow(double length);
+
+// `value` moved to the nearest multiple of `step` (a power of ten), as the double nearest that
+// decimal, so its shortest text has no more decimals than the step; values coarser than the step
+// (beyond 2^53 steps) stay as they are.
+double roundedToStep(double value, double step);
+
 struct RoundedRegion {
     model::DrawnRegion region;
     bool exact = false;  // the rounded contours would cross or touch: `region` is the input, unrounded

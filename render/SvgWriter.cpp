@@ -18,6 +18,7 @@
 #include "render/Page.h"
 #include "render/PathEmitter.h"
 #include "render/RegionHalves.h"
+#include "render/SvgParts.h"
 #include "render/SvgRounding.h"
 #include "render/XmlNames.h"
 
@@ -46,78 +47,6 @@ constexpr int kMaxCuts = 40;
 // of the read position, so a run of whitespace longer than that always reaches the end of the
 // buffer: after kShrinkGap spaces the parser's buffer starts afresh.
 constexpr std::size_t kShrinkGap = 8'000;
-
-// Absolute coordinates (relative ones would accumulate rounding), a command letter only where it
-// changes, shortest round-trip numbers: exact for the doubles given, and as compact as exactness
-// allows.
-class SvgPathData final : public PathSink {
-public:
-    explicit SvgPathData(BufferedWriter& out) : m_out(out) {}
-
-    void moveTo(sim::Vec2 point) override
-    {
-        command('M');
-        write(point);
-    }
-    void lineTo(sim::Vec2 point) override
-    {
-        command('L');
-        write(point);
-    }
-    void cubicTo(sim::Vec2 control1, sim::Vec2 control2, sim::Vec2 end) override
-    {
-        command('C');
-        write(control1);
-        m_out << ' ';
-        write(control2);
-        m_out << ' ';
-        write(end);
-    }
-    void closePath() override { command('Z'); }
-
-private:
-    void command(char letter)
-    {
-        if (letter == m_last && (letter == 'L' || letter == 'C'))
-            m_out << ' ';
-        else
-            m_out << letter;
-        m_last = letter;
-    }
-    void write(sim::Vec2 point) { m_out << point.x << ' ' << point.y; }
-
-    BufferedWriter& m_out;
-    char m_last = 0;
-};
-
-void writeFill(BufferedWriter& xml, const QColor& color)
-{
-    xml << " fill=\"" << color.name(QColor::HexRgb) << '"';
-    if (color.alpha() < 255)
-        xml << " fill-opacity=\"" << color.alpha() / 255.0 << '"';
-}
-
-void writeHeader(BufferedWriter& xml, const model::Drawing& drawing, const Page& page)
-{
-    xml << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
-           "<svg xmlns=\"http://www.w3.org/2000/svg\"\n"
-           "     xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"\n"
-           "     xmlns:sodipodi=\"http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd\"\n"
-           "     version=\"1.1\" width=\""
-        << page.width << "pt\" height=\"" << page.height << "pt\" viewBox=\"0 0 " << drawing.width << ' '
-        << drawing.height << "\">\n";
-}
-
-// Its own locked layer, so a designer editing the regions cannot grab the background by accident.
-void writeBackground(BufferedWriter& xml, const model::Drawing& drawing, UniqueXmlIds& ids)
-{
-    xml << "<g id=\"" << ids.claim(QStringLiteral("background"))
-        << "\" inkscape:groupmode=\"layer\" inkscape:label=\"Background\" sodipodi:insensitive=\"true\">\n"
-        << "<rect id=\"" << ids.claim(QStringLiteral("background-rect")) << "\" x=\"0\" y=\"0\" width=\""
-        << drawing.width << "\" height=\"" << drawing.height << '"';
-    writeFill(xml, drawing.background);
-    xml << "/>\n</g>\n";
-}
 
 // What the region's layers share while they are written.
 struct SvgOutput {
@@ -149,7 +78,7 @@ QByteArray pathHead(const QColor& color, const QString& id, const QString& label
     buffer.open(QIODevice::WriteOnly);
     BufferedWriter out(buffer);
     out << "<path id=\"" << id << "\" inkscape:label=\"" << label << '"';
-    writeFill(out, color);
+    writeSvgFill(out, color);
     out << " fill-rule=\"evenodd\" d=\"";
     static_cast<void>(out.finish());  // a QBuffer takes every write
     return head;
@@ -213,9 +142,9 @@ QString writeSvg(const model::Drawing& drawing, const ExportOptions& options, QI
 {
     BufferedWriter xml(out);
     UniqueXmlIds ids;
-    writeHeader(xml, drawing, pageFor(drawing, options));
+    writeSvgHeader(xml, drawing, pageFor(drawing, options));
     if (options.background)
-        writeBackground(xml, drawing, ids);
+        writeSvgBackground(xml, drawing, ids);
     SvgOutput output{xml, ids, pathStyle(drawing, options), svgCoordinateStep(drawing)};
     for (const model::DrawnRegion& region : drawing.regions)
         writeRegion(output, region);

@@ -6,13 +6,22 @@
 #include "render/Exporter.h"
 
 #include <QIODevice>
+#include <QImage>
 #include <QString>
 
 namespace vf::render {
+
+// Writers trust their input; everything they could choke on is turned away here, before a file is
+// touched. Returns an empty string or what is wrong (without the path).
+[[nodiscard]] QString checkExport(const model::Drawing& drawing, const ExportOptions& options);
 
 [[nodiscard]] QString writeSvg(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
 [[nodiscard]] QString writePdf(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
 [[nodiscard]] QString writeEps(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
 [[nodiscard]] QString writePng(const model::Drawing& drawing, const ExportOptions& options, QIODevice& out);
+
+// The picture writePng encodes (pngPixels in size, premultiplied ARGB); a null image when it is too
+// large to allocate.
+QImage paintedImage(const model::Drawing& drawing, const ExportOptions& options);
 
 } // namespace vf::render

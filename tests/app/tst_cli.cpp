@@ -816,15 +816,18 @@ void TestCli::helpOnEveryCommand_data()
 {
     QTest::addColumn<QStringList>("arguments");
     QTest::addColumn<QStringList>("mentions");  // what the help must say
-    const QStringList program{QStringLiteral("vectorfluid render SCENE"), QStringLiteral("vectorfluid devices"),
-                              QStringLiteral("--version")};
+    const QStringList program{QStringLiteral("vectorfluid render SCENE"), QStringLiteral("vectorfluid animate SCENE"),
+                              QStringLiteral("vectorfluid devices"), QStringLiteral("--version")};
     const QStringList render{QStringLiteral("vectorfluid render SCENE"), QStringLiteral("--check-topology <K>"),
                              QStringLiteral("--polyline"), QStringLiteral("beside it")};
+    const QStringList animate{QStringLiteral("usage: vectorfluid animate SCENE (--out FILE | --frames DIR"), QStringLiteral("--fps <N>"),
+                              QStringLiteral("--transparent"), QStringLiteral("Lottie")};
     const QStringList devices{QStringLiteral("usage: vectorfluid devices"), QStringLiteral("--help")};
     for (const QString& help : {QStringLiteral("--help"), QStringLiteral("-h")}) {
         QTest::addRow("vectorfluid %s", qPrintable(help)) << QStringList{help} << program;
         QTest::addRow("render %s", qPrintable(help)) << QStringList{QStringLiteral("render"), help} << render;
         QTest::addRow("render SCENE %s", qPrintable(help)) << QStringList{QStringLiteral("render"), kStirred, help} << render;
+        QTest::addRow("animate %s", qPrintable(help)) << QStringList{QStringLiteral("animate"), help} << animate;
         QTest::addRow("devices %s", qPrintable(help)) << QStringList{QStringLiteral("devices"), help} << devices;
     }
 }

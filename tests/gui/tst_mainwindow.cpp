@@ -7,6 +7,7 @@
 // own state are tested in files of their own.
 #include "FindChild.h"
 #include "WindowTest.h"
+#include "app/AnimationDialog.h"
 #include "app/ExportDialog.h"
 #include "app/Folders.h"
 #include "app/MainWindow.h"
@@ -549,6 +550,36 @@ private slots:
         QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_E));
         QVERIFY(QFileInfo::exists(svg));
         QVERIFY2(w.statusBar()->currentMessage().contains(QDir::toNativeSeparators(svg)), qPrintable(w.statusBar()->currentMessage()));
+    }
+
+    // File ▸ Export Animation… by mouse: the dialog plays the document's scene in a simulation of
+    // its own and the status bar names the file; the window's geometry and undo history stay as
+    // they were.
+    void exportAnimationByMenuLeavesTheDocument()
+    {
+        MainWindow& w = *m_window;
+        const Geometry before = geometry(w);
+        const int commands = w.document().undoStack().count();
+        const QString json = m_dir.filePath(QStringLiteral("animation.json"));
+        test::whenModal<AnimationDialog>([json](AnimationDialog* dialog) {
+            test::child<QLineEdit>(*dialog, "path")->setText(json);
+            test::child<QDoubleSpinBox>(*dialog, "end")->setValue(0.1);
+            QTest::mouseClick(test::child<QPushButton>(*dialog, "export"), Qt::LeftButton);
+            static_cast<void>(QTest::qWaitFor([dialog] { return !dialog->running(); }, 30000));  // checked below
+            QTest::mouseClick(test::child<QPushButton>(*dialog, "close"), Qt::LeftButton);  // closes it, done or not
+        });
+        QMenu* file = w.menuBar()->actions().front()->menu();
+        QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(file->menuAction()).center());
+        const QList<QAction*> actions = file->actions();
+        QAction* exportAnimation = *std::find_if(actions.begin(), actions.end(), [](QAction* a) {
+            return a->text() == QStringLiteral("Export &Animation…");
+        });
+        QTest::mouseClick(file, Qt::LeftButton, {}, file->actionGeometry(exportAnimation).center());
+        QApplication::setActiveWindow(&w);  // the offscreen platform leaves the menu active
+        QVERIFY(QFileInfo::exists(json));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QDir::toNativeSeparators(json)), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY(geometry(w) == before);
+        QCOMPARE(w.document().undoStack().count(), commands);
     }
 
     // File ▸ Save As… by mouse: the dialog offers the scene's name in the documents folder (or

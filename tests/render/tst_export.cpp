@@ -3,6 +3,7 @@
 // Runs with a QCoreApplication only (QTEST_GUILESS_MAIN): PNG export must not need a GUI.
 // One file past 500 lines: every format's checks share the scenes and the reader helpers below.
 #include "../TestFiles.h"
+#include "ExternalTools.h"
 #include "SvgReadBack.h"
 #include "TestGeometry.h"
 
@@ -99,28 +100,7 @@ bool withinHalfStep(const Polygon& back, const Polygon& original, double step)
     return true;
 }
 
-// ---- external readers --------------------------------------------------------------------
-
-struct Run {
-    int exitCode = -1;
-    QByteArray output;
-};
-
-Run run(const QString& program, const QStringList& arguments)
-{
-    QProcess process;
-    process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(program, arguments);
-    // Inkscape takes about a minute over the largest file on a busy two-core machine.
-    if (!process.waitForFinished(300000) || process.exitStatus() != QProcess::NormalExit)
-        return {-1, process.readAll()};
-    return {process.exitCode(), process.readAll()};
-}
-
-#define REQUIRE_TOOL(variable, name)                                                                     \
-    const QString variable = QStandardPaths::findExecutable(QStringLiteral(name));                       \
-    if (variable.isEmpty())                                                                              \
-        QSKIP(name " is not installed");
+// ---- external readers: ExternalTools.h ---------------------------------------------------
 
 #define EXPORT_OK(drawing, path, options)                                                                \
     do {                                                                                                 \
