@@ -1,7 +1,7 @@
 // vectorfluid: with no command (or a file), the desktop app; `render`, `animate` and `devices` run headless
 // (no display needed, no QApplication), as do the program's own options (--help, --version).
-// `render` sets text (a gather's target) with the font database, which needs a QGuiApplication:
-// it gets one on the offscreen platform.
+// `render` and `animate` play scenes, whose text (a gather's target) is set with the font
+// database, which needs a QGuiApplication: they get one on the offscreen platform.
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 
@@ -60,16 +60,16 @@ int main(int argc, char** argv)
         return vf::app::guiMain(argc, argv);
 
     qInstallMessageHandler(dropQtMessages);
-    const bool render = std::strcmp(argv[1], "render") == 0;
-    if (render)
+    const bool render = std::strcmp(argv[1], "render") == 0, animate = std::strcmp(argv[1], "animate") == 0;
+    if (render || animate)
         qputenv("QT_QPA_PLATFORM", "offscreen");
-    const std::unique_ptr<QCoreApplication> app =
-        render ? std::make_unique<QGuiApplication>(argc, argv) : std::make_unique<QCoreApplication>(argc, argv);
+    const std::unique_ptr<QCoreApplication> app = render || animate ? std::make_unique<QGuiApplication>(argc, argv)
+                                                                     : std::make_unique<QCoreApplication>(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("vectorfluid"));
     QStringList arguments = QCoreApplication::arguments().mid(1);
     if (render)
         return vf::app::renderCommand(arguments.mid(1));
-    if (arguments.front() == QLatin1String("animate"))
+    if (animate)
         return vf::app::animateCommand(arguments.mid(1));
     if (arguments.front() == QLatin1String("devices"))
         return vf::app::devicesCommand(arguments.mid(1));
