@@ -28,7 +28,7 @@
 namespace vf::sim {
 
 struct TargetDriveSettings {
-    double strength = 300.0;  // v_f, 1/s²
+    double strength = 400.0;  // v_f, 1/s²
     double attenuation = 3.0; // v_d, 1/s
     double blur = 0.01;       // σ, canvas units
 };
