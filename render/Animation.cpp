@@ -31,15 +31,7 @@ constexpr std::array kFormats{
     Format{"gif", writeGif, true, true},
 };
 
-const Format* formatFor(const QString& path)
-{
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    for (const Format& format : kFormats) {
-        if (suffix == QLatin1String(format.suffix))
-            return &format;
-    }
-    return nullptr;
-}
+const Format* formatFor(const QString& path) { return formatBySuffix(kFormats, path); }
 
 // Beyond this many frames a frame number no longer fits the formats' integers comfortably, and
 // no animation of this tool needs them (a day at 60 fps is 5,184,000).

@@ -32,15 +32,7 @@ constexpr std::array kFormats{
     Format{"png", writePng, 0.0},
 };
 
-const Format* formatFor(const QString& path)
-{
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    for (const Format& format : kFormats) {
-        if (suffix == QLatin1String(format.suffix))
-            return &format;
-    }
-    return nullptr;
-}
+const Format* formatFor(const QString& path) { return formatBySuffix(kFormats, path); }
 
 bool isPositive(double value) { return std::isfinite(value) && value > 0; }
 

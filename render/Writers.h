@@ -5,11 +5,26 @@
 #include "model/Drawing.h"
 #include "render/Exporter.h"
 
+#include <QFileInfo>
 #include <QIODevice>
 #include <QImage>
 #include <QString>
 
+#include <array>
+#include <cstddef>
+
 namespace vf::render {
+
+// The entry of `formats` (each with a `suffix`, lower case) whose suffix is the path's, or null.
+template <typename Format, std::size_t N>
+const Format* formatBySuffix(const std::array<Format, N>& formats, const QString& path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    for (const Format& format : formats)
+        if (suffix == QLatin1String(format.suffix))
+            return &format;
+    return nullptr;
+}
 
 // Writers trust their input; everything they could choke on is turned away here, before a file is
 // touched. Returns an empty string or what is wrong (without the path).
