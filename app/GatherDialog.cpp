@@ -14,11 +14,15 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPixmap>
 #include <QPushButton>
 
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace vf::app {
@@ -37,6 +41,30 @@ QDoubleSpinBox* numberBox(double value, double minimum, double maximum, const QS
     box->setValue(value);
     box->setSuffix(suffix);
     return box;
+}
+
+// The target's shapes on the canvas, `side` pixels along its longer side.
+QPixmap preview(const std::vector<std::vector<sim::Polygon>>& target, const model::Canvas& canvas, int side)
+{
+    const double scale = side / std::max(canvas.width, canvas.height);
+    QPixmap picture(int(std::ceil(canvas.width * scale)), int(std::ceil(canvas.height * scale)));
+    picture.fill(canvas.background);
+    QPainter painter(&picture);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.scale(scale, scale);
+    for (const std::vector<sim::Polygon>& shape : target) {
+        QPainterPath path;
+        path.setFillRule(Qt::OddEvenFill);
+        for (const sim::Polygon& contour : shape) {
+            QPolygonF polygon;
+            for (const sim::Vec2& p : contour)
+                polygon << QPointF(p.x, p.y);
+            path.addPolygon(polygon);
+            path.closeSubpath();
+        }
+        painter.fillPath(path, QColor(0x26, 0x46, 0x53));
+    }
+    return picture;
 }
 
 } // namespace
@@ -91,6 +119,9 @@ GatherDialog::GatherDialog(const model::Canvas& canvas, std::vector<RegionOutlin
     m_duration->setToolTip(tr("Seconds of simulated time the fluid is driven"));
     m_strength = numberBox(m_choice.drive.strength, 0.0, 100000.0, {}, "gatherStrength");
     m_strength->setToolTip(tr("How hard the ink is drawn in (a spring constant, 1/s²)"));
+    m_preview = new QLabel;
+    m_preview->setObjectName(QStringLiteral("gatherPreview"));
+    m_preview->setFrameShape(QFrame::Box);
     m_summary = new QLabel;
     m_summary->setObjectName(QStringLiteral("gatherSummary"));
     m_summary->setWordWrap(true);
@@ -104,6 +135,7 @@ GatherDialog::GatherDialog(const model::Canvas& canvas, std::vector<RegionOutlin
     m_form->addRow(tr("File:"), m_fileRow);
     m_form->addRow(tr("Duration:"), m_duration);
     m_form->addRow(tr("Strength:"), m_strength);
+    m_form->addRow(tr("Preview:"), m_preview);
     m_form->addRow(m_summary);
     m_form->addRow(m_buttons);
 
@@ -175,6 +207,7 @@ void GatherDialog::update()
                                  .arg(m_choice.duration)
                            : problem);
     m_buttons->button(QDialogButtonBox::Ok)->setEnabled(problem.isEmpty());
+    m_preview->setPixmap(preview(m_choice.target, m_canvas, 160));
 }
 
 } // namespace vf::app

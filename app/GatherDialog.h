@@ -1,8 +1,8 @@
 #pragma once
 // Tools ▸ Gather Into…: target-driven design (sim/TargetDrive.h). The target is text set in a font
 // and fitted to the canvas, a region's present shape, or the shapes of an SVG file; the dialog
-// outlines it as the choices change, says what gathering will do, and refuses a target without an
-// outline (blank text, an SVG file that cannot be read) before anything is done.
+// outlines it in a preview as the choices change, says what gathering will do, and refuses a
+// target without an outline (blank text, an SVG file that cannot be read) before anything is done.
 #include "model/Scene.h"
 #include "sim/TargetDrive.h"
 
@@ -63,7 +63,7 @@ private:
     QLineEdit* m_file;
     QHBoxLayout* m_fileRow;
     QDoubleSpinBox *m_duration, *m_strength;
-    QLabel* m_summary;
+    QLabel *m_preview, *m_summary;
     QDialogButtonBox* m_buttons;
 };
 
