@@ -6,24 +6,10 @@
 namespace vf::sim {
 namespace {
 
-// Where a row of sample points at height y enters and leaves `contours` (even-odd): the sorted
-// x of every edge crossing, so [x0, x1), [x2, x3), ... lie inside.
-void rowCrossings(const std::vector<Polygon>& contours, double y, std::vector<double>& out)
+// The samples of one row of points (x = (k + 0.5) · step, k < count) inside the spans between
+// sorted crossings [x0, x1), [x2, x3), ..., marked.
+void markSpans(const std::vector<double>& crossings, double step, char* inside, int count)
 {
-    out.clear();
-    for (const Polygon& p : contours)
-        for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-            const Vec2 a = p[i], b = p[(i + 1) % n];
-            if ((a.y > y) != (b.y > y))
-                out.push_back(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
-        }
-    std::sort(out.begin(), out.end());
-}
-
-// The samples of one row of points (x = (k + 0.5) · step, k < count) inside the spans, marked.
-void markSpans(const std::vector<double>& crossings, double step, std::vector<char>& inside)
-{
-    const int count = int(inside.size());
     for (std::size_t s = 0; s + 1 < crossings.size(); s += 2) {
         const int first = std::max(0, int(std::ceil(crossings[s] / step - 0.5)));
         const int end = std::min(count, int(std::ceil(crossings[s + 1] / step - 0.5)));
@@ -33,22 +19,37 @@ void markSpans(const std::vector<double>& crossings, double step, std::vector<ch
 }
 
 // Calls f(row, inside) for each row of a (cols · samples) x (rows · samples) raster of points, with
-// inside[k] set where point k lies in some shape.
+// inside[k] set where point k lies in some shape (each even-odd). Each edge is visited once, and
+// adds its crossing to the rows of points it spans: the work is the edges and the crossings, not
+// the edges times the rows.
 template <class F>
 void rasterise(const std::vector<std::vector<Polygon>>& shapes, const CellLattice& lattice, int samples, F&& f)
 {
     const int columns = lattice.cols * samples, rows = lattice.rows * samples;
     const double stepX = lattice.width / columns, stepY = lattice.height / rows;
-    std::vector<double> crossings;
-    std::vector<char> inside(columns);
-    for (int row = 0; row < rows; ++row) {
-        std::fill(inside.begin(), inside.end(), 0);
-        for (const std::vector<Polygon>& shape : shapes) {
-            rowCrossings(shape, (row + 0.5) * stepY, crossings);
-            markSpans(crossings, stepX, inside);
+    std::vector<char> inside(std::size_t(columns) * rows, 0);
+    std::vector<std::vector<double>> crossings(rows);
+    for (const std::vector<Polygon>& shape : shapes) {
+        for (const Polygon& p : shape)
+            for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+                const Vec2 a = p[i], b = p[(i + 1) % n];
+                // Rows at y with exactly one end above: y in [min, max) of the ends' heights.
+                const double lo = std::min(a.y, b.y) / stepY - 0.5, hi = std::max(a.y, b.y) / stepY - 0.5;
+                const int first = int(std::clamp(std::ceil(lo), 0.0, double(rows)));
+                const int end = int(std::clamp(std::ceil(hi), 0.0, double(rows)));
+                for (int row = first; row < end; ++row) {
+                    const double y = (row + 0.5) * stepY;
+                    crossings[row].push_back(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
+                }
+            }
+        for (int row = 0; row < rows; ++row) {
+            std::sort(crossings[row].begin(), crossings[row].end());
+            markSpans(crossings[row], stepX, inside.data() + std::size_t(row) * columns, columns);
+            crossings[row].clear();
         }
-        f(row, inside);
     }
+    for (int row = 0; row < rows; ++row)
+        f(row, inside.data() + std::size_t(row) * columns, columns);
 }
 
 std::vector<double> gaussianWeights(double sigmaInCells)
@@ -85,9 +86,9 @@ std::vector<double> coverage(const std::vector<std::vector<Polygon>>& shapes, co
 {
     std::vector<double> cells(lattice.size(), 0.0);
     const double share = 1.0 / (samples * samples);
-    rasterise(shapes, lattice, samples, [&](int row, const std::vector<char>& inside) {
+    rasterise(shapes, lattice, samples, [&](int row, const char* inside, int count) {
         double* line = cells.data() + std::size_t(row / samples) * lattice.cols;
-        for (std::size_t k = 0; k < inside.size(); ++k)
+        for (int k = 0; k < count; ++k)
             line[k / samples] += inside[k] * share;
     });
     return cells;
@@ -105,10 +106,10 @@ double intersectionOverUnion(const std::vector<std::vector<Polygon>>& ink, const
                              const CellLattice& lattice)
 {
     std::vector<std::vector<char>> inked(lattice.rows);
-    rasterise(ink, lattice, 1, [&](int row, const std::vector<char>& inside) { inked[row] = inside; });
+    rasterise(ink, lattice, 1, [&](int row, const char* inside, int count) { inked[row].assign(inside, inside + count); });
     std::size_t both = 0, either = 0;
-    rasterise({target}, lattice, 1, [&](int row, const std::vector<char>& inside) {
-        for (std::size_t k = 0; k < inside.size(); ++k) {
+    rasterise({target}, lattice, 1, [&](int row, const char* inside, int count) {
+        for (int k = 0; k < count; ++k) {
             both += inked[row][k] && inside[k];
             either += inked[row][k] || inside[k];
         }
