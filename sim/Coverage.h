@@ -20,7 +20,9 @@ struct CellLattice {
 std::vector<double> coverage(const std::vector<std::vector<Polygon>>& shapes, const CellLattice& lattice, int samples);
 
 // A Gaussian blur of a field on the lattice with standard deviation `sigma` in canvas units; the
-// canvas is surrounded by empty space (what leaves the lattice is lost).
+// canvas is surrounded by empty space (what leaves the lattice is lost). From σ of eight cells on,
+// an almost-Gaussian one of three box blurs of about the same variance, whose cost does not grow
+// with σ.
 std::vector<double> gaussianBlur(const std::vector<double>& field, const CellLattice& lattice, double sigma);
 
 // Intersection over union of the ink and a target, from one point per cell of `lattice` (cells

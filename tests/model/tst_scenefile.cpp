@@ -93,8 +93,8 @@ Scene richScene()
                                       {QColor(1, 2, 3), QColor(9, 8, 7, 6)}, 99, 0.1, 0.2, 0.05, 0.3, 0.01, 0.7});
     s.strokes.push_back(PatternStroke{PatternStroke::Kind::GelGit, 0.9, CombStroke::Mode::Exact, {QColor(4, 5, 6)},
                                       std::uint64_t(1) << 53, 1.0 / 7.0, 1.0 / 3.0, 1e-3, 0.125, 1e-9, 1e-9});
-    s.strokes.push_back(GatherStroke{1.0, 2.5, Shape(RectShape{{0.2, 0.3}, {0.6, 1.0 / 3.0}}), {0.0, 1.1, 0.02}});
-    s.strokes.push_back(GatherStroke{0.0, 1e-3, TextTarget{u"Ink ✓"_s, u"DejaVu Serif"_s, false, {0.1, 0.7}, 0.3}, {8.0, 0.0, 1e-3}});
+    s.strokes.push_back(GatherStroke{1.0, 2.5, Shape(RectShape{{0.2, 0.3}, {0.6, 1.0 / 3.0}}), {0.0, 1.1, 0.02}, {}});
+    s.strokes.push_back(GatherStroke{0.0, 1e-3, TextTarget{u"Ink ✓"_s, u"DejaVu Serif"_s, false, {0.1, 0.7}, 0.3}, {8.0, 0.0, 1e-3}, {}});
     return s;
 }
 

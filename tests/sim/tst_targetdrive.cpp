@@ -65,6 +65,34 @@ private slots:
         QVERIFY(b[20 * 41 + 20] > b[20 * 41 + 21] && b[20 * 41 + 21] > b[20 * 41 + 22]);
     }
 
+    // The Gaussian taps (narrow blurs) and the three boxes (from eight cells on) spread a spot with
+    // the variance asked for, along both axes.
+    void blurHasTheVarianceAsked_data()
+    {
+        QTest::addColumn<double>("cells");
+        QTest::newRow("1.5 cells, taps") << 1.5;
+        QTest::newRow("7.9 cells, taps") << 7.9;
+        QTest::newRow("8 cells, boxes") << 8.0;
+        QTest::newRow("12.5 cells, boxes") << 12.5;
+    }
+    void blurHasTheVarianceAsked()
+    {
+        QFETCH(double, cells);
+        const int n = 201, middle = 100;
+        const CellLattice lattice{n, n, 1.0, 1.0};
+        std::vector<double> spot(lattice.size(), 0.0);
+        spot[std::size_t(middle) * n + middle] = 1.0;
+        const std::vector<double> b = sim::gaussianBlur(spot, lattice, cells / n);
+        double across = 0.0, down = 0.0;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                across += b[std::size_t(j) * n + i] * (i - middle) * (i - middle);
+                down += b[std::size_t(j) * n + i] * (j - middle) * (j - middle);
+            }
+        QVERIFY2(std::abs(across / (cells * cells) - 1.0) < 0.05, qPrintable(QString::number(across / (cells * cells))));
+        QVERIFY2(std::abs(down / (cells * cells) - 1.0) < 0.05, qPrintable(QString::number(down / (cells * cells))));
+    }
+
     void intersectionOverUnionOfSimpleShapes()
     {
         const CellLattice cells{200, 200, 1.0, 1.0};
