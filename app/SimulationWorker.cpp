@@ -175,12 +175,14 @@ void SimulationWorker::gather(const std::shared_ptr<const sim::TargetDrive>& dri
         m_gather = Gather{drive, m_simulation->time() + duration};
 }
 
-void SimulationWorker::driveGather()
+bool SimulationWorker::driveGather()
 {
-    if (m_gather && m_simulation->time() < m_gather->until)
+    if (m_gather && m_simulation->time() < m_gather->until) {
         m_simulation->drive(m_gather->drive->force(m_simulation->regions()));
-    else
-        m_gather.reset();
+        return true;
+    }
+    m_gather.reset();
+    return false;
 }
 
 void SimulationWorker::stylus(const std::vector<sim::StylusSegment>& pens)
@@ -262,8 +264,8 @@ void SimulationWorker::step()
     try {
         bool limit = m_script->applyTools(*m_simulation, t, t + dt);
         m_script->applyStylus(*m_simulation, t, t + dt);
-        m_script->applyGather(*m_simulation, t);
-        driveGather();
+        if (!driveGather())  // the app's gather takes over from the scene's
+            m_script->applyGather(*m_simulation, t);
         feedPen();
         limit = m_simulation->step(dt).vertexLimitReached || limit;
         ++m_steps;

@@ -73,7 +73,7 @@ private:
     void build(const model::EngineSettings& settings, const sim::SimulationState* state);
     bool running() const { return m_playing || m_stroking; }
     void feedPen();
-    void driveGather();
+    bool driveGather();  // the app's gather, if one is under way; whether it drove
     void onRunningChanged(bool wasRunning);
     void step();
     void scheduleStep();

@@ -266,10 +266,10 @@ struct GatherStroke {
     // The target's outline (even-odd), filled by the reader: text is set with the fonts installed.
     std::vector<sim::Polygon> contours;
 
+    // The outline follows from the rest.
     friend bool operator==(const GatherStroke& a, const GatherStroke& b)
     {
-        return a.time == b.time && a.duration == b.duration && a.target == b.target && a.drive.strength == b.drive.strength
-            && a.drive.attenuation == b.drive.attenuation && a.drive.blur == b.drive.blur;
+        return a.time == b.time && a.duration == b.duration && a.target == b.target && a.drive == b.drive;
     }
 };
 

@@ -31,6 +31,8 @@ struct TargetDriveSettings {
     double strength = 400.0;  // v_f, 1/s²
     double attenuation = 3.0; // v_d, 1/s
     double blur = 0.01;       // σ, canvas units
+
+    friend bool operator==(const TargetDriveSettings&, const TargetDriveSettings&) = default;
 };
 
 // Throws std::invalid_argument (one line) for settings a drive cannot use.

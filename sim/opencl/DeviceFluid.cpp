@@ -1,7 +1,7 @@
 // The stable-fluids step of sim/FluidSolver.cpp on an OpenCL device, in float32, the velocity
 // staying on the device between steps (the OpenCL backend's fluid on a GPU; on a CPU device it runs
 // HostFluid instead, see Fluid.h, and the tests run this one there): the same MAC grid, free-slip
-// closed walls, RK2-traced semi-Lagrangian or MacCormack advection, implicit viscosity, stylus after viscosity, pressure
+// closed walls, RK2-traced semi-Lagrangian or MacCormack advection, implicit viscosity, stylus and body force after viscosity, pressure
 // projection. The kernels are in fluid.cl, the MAC sampling they share with the contour kernels in
 // flow_fluid.cl. One file because the step's launches, the solver's buffers and its level table
 // are one set of state that every launch sequence below reads.

@@ -1,5 +1,5 @@
 // The stable-fluids step of sim/FluidSolver.cpp in float32 (advection, implicit viscosity, stylus,
-// pressure projection), and the preconditioned CG of sim/LinearSolve.cpp it solves with. Host side
+// body force, pressure projection), and the preconditioned CG of sim/LinearSolve.cpp it solves with. Host side
 // and the reasons behind the solver's shape: sim/opencl/DeviceFluid.cpp. Comes after flow.h.cl and
 // flow_fluid.cl (the stream function's layout). The host defines VF_LOCAL (work-group size of every kernel over
 // cells or faces), VF_GROUP (size of the single-work-group kernels), VF_SMOOTHING_SWEEPS and
