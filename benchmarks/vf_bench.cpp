@@ -10,6 +10,8 @@
 //                              the device fluid: the ceiling the OpenCL step's throughput is held to
 //   FullStep/<backend>/N       Simulation::step through the backend interface (reference, opencl)
 //   Breakdown/reference/N      the reference step taken apart phase by phase (ms per step)
+//   Drop/<backend>/N           Simulation::drop into the stirred sheet of N vertices (ms per drop),
+//                              and the share of it the widening of layers takes
 //
 // The scene: the default 64×64 fluid, stirred by a pen that circles the canvas centre at a steady
 // speed, first alone (so the flow is already moving) and then with a lattice of small ink circles
@@ -403,6 +405,46 @@ void breakdownBenchmark(benchmark::State& state, std::int64_t target)
     state.counters["contour_B_per_vertex"] = contourBytes / double(tracker.vertexCount());
 }
 
+// ---- Drop ---------------------------------------------------------------------------------------
+
+// Drops of radius 0.05 into the stirred sheet, one per iteration at places spread over the canvas
+// (a Weyl sequence), each drop pushing every vertex. "widening_ms" is what Simulation::separateLayers
+// took of each drop (the phase clock's "pinches": drops cut nothing).
+void dropBenchmark(benchmark::State& state, const Backend& backend, std::int64_t target)
+{
+    const Layout layout = layoutFor(target);
+    std::unique_ptr<Simulation> sim;
+    try {
+        sim = backend.make(settingsFor(layout));
+    } catch (const opencl::DeviceError& e) {
+        state.SkipWithError((std::string("OpenCL backend skipped: ") + e.what()).c_str());
+        return;
+    }
+    int step = 0;
+    for (; step < kStirSteps; ++step)
+        sim->stylus(penAt(step), penAt(step + 1), kPenRadius, kDt), sim->step(kDt);
+    for (const Vec2& centre : circleCentres(layout))
+        sim->addRegion({circle(centre, layout.radius, layout.maxSpacing)});
+    for (int k = 0; k < kWarmupSteps; ++k, ++step)
+        sim->stylus(penAt(step), penAt(step + 1), kPenRadius, kDt), sim->step(kDt);
+    sim->enablePhaseTiming();
+    const double widening = sim->phaseSeconds()[std::size_t(Phase::Pinches)];
+    double seconds = 0.0, vertices = 0.0;
+    int k = 0;
+    for (auto _ : state) {
+        ++k;
+        const Vec2 at(0.2 + 0.6 * std::fmod(0.618034 * k, 1.0), 0.2 + 0.6 * std::fmod(0.414214 * k, 1.0));
+        vertices += double(sim->vertexCount());
+        const auto start = Clock::now();
+        sim->drop(at, 0.05);
+        seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    const double drops = double(state.iterations());
+    state.counters["vertices"] = vertices / drops;
+    state.counters["widening_ms"] = 1e3 * (sim->phaseSeconds()[std::size_t(Phase::Pinches)] - widening) / drops;
+    state.counters["drop_ms"] = 1e3 * seconds / drops;
+}
+
 // ---- Registration -------------------------------------------------------------------------------
 
 struct Size {
@@ -437,6 +479,13 @@ void registerAll()
             ->Unit(benchmark::kMillisecond)
             ->Iterations(s.breakdownIterations)
             ->UseManualTime();
+    for (const Backend& b : backends())
+        for (const Size& s : kSizes)
+            benchmark::RegisterBenchmark(("Drop/" + std::string(b.name) + "/" + std::to_string(s.vertices)).c_str(),
+                                         dropBenchmark, b, s.vertices)
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(s.breakdownIterations)
+                ->UseRealTime();
 }
 
 } // namespace

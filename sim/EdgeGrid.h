@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -23,28 +24,28 @@ inline std::size_t after(std::size_t i, std::size_t n)
     return i + 1 == n ? 0 : i + 1;
 }
 
-// Every edge of every contour in the cells its box, widened by its contour's pinch width, overlaps:
-// the edges of a contour within that width of a point are among those of the point's cell.
-// Counting sort, as ProximityGrid.
+// Every edge of every contour (or, given a window, every one whose widened box meets it) in the
+// cells its box, widened by its contour's pinch width, overlaps: the edges of a contour within that
+// width of a point are among those of the point's cell. Counting sort, as ProximityGrid.
 class EdgeGrid {
 public:
     struct Edge {
         std::uint32_t contour, from;  // from vertex `from` to the next
     };
 
-    EdgeGrid(const std::vector<Outline>& contours, const std::vector<double>& widths) : m_widths(widths)
+    EdgeGrid(const std::vector<Outline>& contours, const std::vector<double>& widths,
+             std::optional<Window> window = std::nullopt)
+        : m_widths(widths), m_window(window)
     {
         Vec2 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
         double edgeLength = 0.0;
         std::size_t edges = 0;
-        for (const Outline& c : contours) {
-            for (std::size_t i = 0; i < c.size(); ++i) {
-                low = glm::min(low, c[i]);
-                high = glm::max(high, c[i]);
-                edgeLength += glm::distance(c[i], c[after(i, c.size())]);
-            }
-            edges += c.size();
-        }
+        forEveryEdge(contours, [&](Edge, Vec2 a, Vec2 b) {
+            low = glm::min(low, glm::min(a, b));
+            high = glm::max(high, glm::max(a, b));
+            edgeLength += glm::distance(a, b);
+            ++edges;
+        });
         if (edges == 0)
             return;
         // Cells about twice the mean edge long, at most 1024 across the extent.
@@ -87,24 +88,35 @@ private:
         return {std::clamp(int(q.x), 0, m_columns - 1), std::clamp(int(q.y), 0, m_rows - 1)};
     }
 
+    // f(edge, a, b) for every edge a–b the grid holds.
     template <class F>
-    void forEveryEdgeCell(const std::vector<Outline>& contours, F f) const
+    void forEveryEdge(const std::vector<Outline>& contours, F f) const
     {
         for (std::size_t k = 0; k < contours.size(); ++k) {
             const Outline& p = contours[k];
             for (std::size_t i = 0; i < p.size(); ++i) {
                 const Vec2 a = p[i], b = p[after(i, p.size())];
-                const auto [c0, r0] = cellOf(glm::min(a, b) - Vec2(m_widths[k]));
-                const auto [c1, r1] = cellOf(glm::max(a, b) + Vec2(m_widths[k]));
-                for (int r = r0; r <= r1; ++r)
-                    for (int c = c0; c <= c1; ++c)
-                        f(std::size_t(r) * std::size_t(m_columns) + std::size_t(c),
-                          Edge{std::uint32_t(k), std::uint32_t(i)});
+                if (!m_window || m_window->meets(a, b, m_widths[k]))
+                    f(Edge{std::uint32_t(k), std::uint32_t(i)}, a, b);
             }
         }
     }
 
+    template <class F>
+    void forEveryEdgeCell(const std::vector<Outline>& contours, F f) const
+    {
+        forEveryEdge(contours, [&](Edge e, Vec2 a, Vec2 b) {
+            const double width = m_widths[e.contour];
+            const auto [c0, r0] = cellOf(glm::min(a, b) - Vec2(width));
+            const auto [c1, r1] = cellOf(glm::max(a, b) + Vec2(width));
+            for (int r = r0; r <= r1; ++r)
+                for (int c = c0; c <= c1; ++c)
+                    f(std::size_t(r) * std::size_t(m_columns) + std::size_t(c), e);
+        });
+    }
+
     const std::vector<double>& m_widths;
+    std::optional<Window> m_window;
     double m_cell = 1.0;
     Vec2 m_origin{0.0};
     int m_columns = 0, m_rows = 0;

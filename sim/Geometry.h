@@ -2,6 +2,7 @@
 // Plain polygon geometry shared by the engine, the document and the tests.
 #include <glm/vec2.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -39,6 +40,19 @@ Polygon resample(const Polygon& polygon, double maxSpacing);
 
 // A circle sampled with edges no longer than maxSpacing (at least 8 vertices), positive area.
 Polygon circle(Vec2 center, double radius, double maxSpacing);
+
+// An axis-aligned box of the canvas: where a search looks.
+struct Window {
+    Vec2 low, high;
+
+    bool holds(Vec2 p) const { return p.x >= low.x && p.y >= low.y && p.x <= high.x && p.y <= high.y; }
+    // Whether the box of a and b, widened by `margin`, meets this one.
+    bool meets(Vec2 a, Vec2 b, double margin) const
+    {
+        return std::max(a.x, b.x) + margin >= low.x && std::min(a.x, b.x) - margin <= high.x &&
+               std::max(a.y, b.y) + margin >= low.y && std::min(a.y, b.y) - margin <= high.y;
+    }
+};
 
 double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b);
 // Where w, linear from wa to wb over [0, 1], passes strictly a whole number in [0, last], the one

@@ -45,10 +45,10 @@ bool ReferenceSimulation::applyMap(const ExactMap& map)
     return m_tracker.applyMap(map, *m_flow, time());
 }
 
-void ReferenceSimulation::separateLayers()
+void ReferenceSimulation::separateLayers(std::optional<Window> within)
 {
     const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
-    m_tracker.separateLayers();
+    m_tracker.separateLayers(within);
 }
 
 bool ReferenceSimulation::pushOutward(Vec2 center, double radius)

@@ -131,10 +131,23 @@ bool moveIsClean(const std::vector<std::vector<Vec2>>& positions, const EdgeGrid
     return true;
 }
 
+// The window grown by the longest edge at a vertex inside it: the edges of a vertex that moves
+// reach no farther, so every edge they could meet is among those of the grown window.
+Window withEdgesOf(const std::vector<Outline>& contours, Window window)
+{
+    double longest = 0.0;
+    for (const Outline& c : contours)
+        for (std::size_t i = 0; i < c.size(); ++i)
+            if (window.holds(c[i]))
+                longest = std::max({longest, glm::distance(c[i], c[after(i, c.size())]),
+                                    glm::distance(c[i], c[(i + c.size() - 1) % c.size()])});
+    return {window.low - Vec2(longest), window.high + Vec2(longest)};
+}
 
 } // namespace
 
-std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bool singlePrecision)
+std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bool singlePrecision,
+                                        std::optional<Window> within)
 {
     std::vector<VertexMove> moves;
     if (contours.empty())
@@ -143,14 +156,17 @@ std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bo
     // Boxes twice as wide: an edge whose ends have moved (a width at most) is still found.
     std::vector<double> reach(widths.size());
     std::transform(widths.begin(), widths.end(), reach.begin(), [](double w) { return 2.0 * w; });
-    const EdgeGrid grid(contours, reach);
+    const EdgeGrid grid(contours, reach, within ? std::optional(withEdgesOf(contours, *within)) : std::nullopt);
     // Where each vertex would go, from the positions before any move; then, in turn, the moves that
     // stay clean of the contours as moved so far.
     std::vector<VertexMove> wanted;
     for (std::size_t k = 0; k < contours.size(); ++k)
-        for (std::size_t i = 0; i < contours[k].size(); ++i)
+        for (std::size_t i = 0; i < contours[k].size(); ++i) {
+            if (within && !within->holds(contours[k][i]))
+                continue;
             if (const Vec2 to = stored(separated(contours, grid, widths, k, i), singlePrecision); to != contours[k][i])
                 wanted.push_back({std::uint32_t(k), std::uint32_t(i), to});
+        }
     if (wanted.empty())
         return moves;
     std::vector<std::vector<Vec2>> moved;
@@ -182,9 +198,9 @@ void moveVertices(std::vector<Contour>& contours, const std::vector<VertexMove>&
     }
 }
 
-std::size_t separateLayers(std::vector<Contour>& contours)
+std::size_t separateLayers(std::vector<Contour>& contours, std::optional<Window> within)
 {
-    const std::vector<VertexMove> moves = findSeparations(outlinesOf(contours));
+    const std::vector<VertexMove> moves = findSeparations(outlinesOf(contours), false, within);
     moveVertices(contours, moves);
     return moves.size();
 }

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -22,7 +23,9 @@ struct VertexMove {
     Vec2 to{0.0};
 };
 // With `singlePrecision` the moves are to positions a float holds (a device's), checked as such.
-std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bool singlePrecision = false);
+// `within`: only the vertices inside that window move (checked against every edge they could meet).
+std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bool singlePrecision = false,
+                                        std::optional<Window> within = std::nullopt);
 // Moves vertex i of the ring to `to`; returns how much the ring's shoelace area changed.
 double moveVertex(std::span<Vec2> ring, std::size_t i, Vec2 to);
 // The moves made, in order, each contour's area target following its area: the ink pressed out of
@@ -30,6 +33,6 @@ double moveVertex(std::span<Vec2> ring, std::size_t i, Vec2 to);
 // back (it would move all of it, toward other ink too).
 void moveVertices(std::vector<Contour>& contours, const std::vector<VertexMove>& moves);
 // findSeparations on `contours`, the moves made by moveVertices. Returns how many vertices moved.
-std::size_t separateLayers(std::vector<Contour>& contours);
+std::size_t separateLayers(std::vector<Contour>& contours, std::optional<Window> within = std::nullopt);
 
 } // namespace vf::sim

@@ -115,11 +115,16 @@ DropReport Simulation::drop(Vec2 center, double radius)
                           4.0 * double(FLT_EPSILON) * (std::max(std::abs(center.x), std::abs(center.y)) + radius);
     const Polygon dropped = circle(center, std::max(radius - inside, radius / 2.0), settings().tracking.maxSpacing);
     growTargetAreasAround(center, std::numbers::pi * radius * radius);
-    separateLayers();
+    // The push leaves a layer at distance d from the centre d/√(d² + r²) as thick: 0.95 of it at 3r,
+    // where it then lies at √10·r. Farther out it presses layers too little to matter, so the
+    // widening looks within those distances only and a drop into a big sheet costs little more
+    // than the push.
+    const auto around = [center](double reach) { return Window{center - Vec2(reach), center + Vec2(reach)}; };
+    separateLayers(around(3.0 * radius));
     const bool refined = pushOutward(center, radius);
     DropReport report;
     report.region = addRegion({dropped});
-    separateLayers();
+    separateLayers(around(std::sqrt(10.0) * radius));
     report.vertexLimitReached = !refined || vertexCount() > settings().tracking.maxVertices;
     return report;
 }

@@ -139,11 +139,12 @@ protected:
     // when refinement stopped at max_vertices).
     virtual void growTargetAreasAround(Vec2 p, double area) = 0;
     virtual bool pushOutward(Vec2 center, double radius) = 0;
-    // Layers between two contours widened to the pinch width (sim/Separation.h): before every drop
-    // and exact map (they press layers) and after every drop (it leaves ink a hair from its centre
-    // a hair outside its rim). Not in the steps: there the moves cost marbling a third of its time
+    // Layers between two contours widened to the pinch width (sim/Separation.h), everywhere or
+    // within a window: before every exact map (it presses layers anywhere), and around every drop
+    // before and after it (it presses the layers near it, and leaves ink a hair from its centre a
+    // hair outside its rim). Not in the steps: there the moves cost marbling a third of its time
     // (the refinement works the little bumps they leave), and flow presses layers gradually.
-    virtual void separateLayers() = 0;
+    virtual void separateLayers(std::optional<Window> within = std::nullopt) = 0;
 };
 
 // Throws std::invalid_argument with a one-line message for settings no backend can run.

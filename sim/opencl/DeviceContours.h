@@ -54,8 +54,8 @@ public:
     // when a cut was made. Returns how many cuts were made.
     std::size_t cutPinches();
     // Layers between two contours widened to the pinch width (sim/Pinches.h), searched on the host
-    // too: the contours are written again when a vertex moved. Returns how many moved.
-    std::size_t separateLayers();
+    // too, everywhere or within a window: the moved vertices are written. Returns how many moved.
+    std::size_t separateLayers(std::optional<Window> within);
 
     // A tool's exact map (sim/ExactMap.h) as the motion, then refinement, as drop().
     bool applyMap(const ExactMap& map, const FlowBinding& flow);

@@ -65,10 +65,10 @@ bool OpenClSimulation::applyMap(const ExactMap& map)
     return m_contours->applyMap(map, binding(m_time, m_time));
 }
 
-void OpenClSimulation::separateLayers()
+void OpenClSimulation::separateLayers(std::optional<Window> within)
 {
     const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
-    m_contours->separateLayers();
+    m_contours->separateLayers(within);
 }
 
 bool OpenClSimulation::pushOutward(Vec2 center, double radius)
