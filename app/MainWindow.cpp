@@ -374,6 +374,7 @@ void MainWindow::createStatusBar()
         statusBar()->addPermanentWidget(l.label);
     }
     m_timeLabel->setObjectName(QStringLiteral("simulatedTime"));
+    m_backendLabel->setObjectName(QStringLiteral("backendInUse"));
     connect(m_canvas, &Canvas::displayFpsChanged, this, [this](int fps) { m_fpsLabel->setText(tr("%1 fps").arg(fps)); });
 }
 

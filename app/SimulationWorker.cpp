@@ -21,10 +21,12 @@ QString firstLine(const char* what)
 
 SimulationWorker::SimulationWorker(QObject* parent)
     : QObject(parent)
-    , m_stepTimer(this)  // a child, so that it moves to the worker's thread with it
+    , m_stepTimer(this)  // children, so that they move to the worker's thread with it
+    , m_warmUp(this)
 {
     m_stepTimer.setSingleShot(true);
     connect(&m_stepTimer, &QTimer::timeout, this, &SimulationWorker::step);
+    connect(&m_warmUp, &KernelWarmUp::finished, this, &SimulationWorker::kernelsCompiled);
     m_clock.start();
 }
 
@@ -36,9 +38,15 @@ void SimulationWorker::build(const model::EngineSettings& settings, const sim::S
     scene.flow = settings.flow;
     scene.tracking = settings.tracking;
     const sim::SimulationSettings simulationSettings = model::simulationSettings(scene);
+    const std::optional<int> device = settings.device >= 0 ? std::optional<int>(settings.device) : std::nullopt;
+    // A device whose kernels are not compiled yet: the reference backend runs until they are.
+    const bool compiling = settings.backend != QLatin1String("reference") && !m_warmUpFailed &&
+                           (m_warmUp.isRunning() || !KernelWarmUp::isReady(device));
+    if (compiling)
+        m_warmUp.start(device);
     QString fallback;
     std::unique_ptr<sim::Simulation> simulation =
-        makeBackend(simulationSettings, settings.backend, settings.device >= 0 ? std::optional<int>(settings.device) : std::nullopt, fallback);
+        makeBackend(simulationSettings, compiling ? QStringLiteral("reference") : settings.backend, device, fallback);
     if (state) {
         try {
             simulation->restore(*state);
@@ -57,8 +65,28 @@ void SimulationWorker::build(const model::EngineSettings& settings, const sim::S
     m_copying.reset();
     m_settings = settings;
     m_backendLabel = backendLabel(*m_simulation);
+    if (compiling)
+        m_backendLabel += tr(", until the OpenCL kernels are compiled (first launch)");
     if (!fallback.isEmpty())
         emit notice(fallback.section('\n', 0, 0));
+}
+
+void SimulationWorker::kernelsCompiled(const QString& error)
+{
+    if (!m_simulation || m_settings.backend == QLatin1String("reference"))
+        return;  // chosen meanwhile: it runs already
+    if (!error.isEmpty()) {
+        m_warmUpFailed = true;  // making the backend will say why and fall back, without a warm-up
+        emit notice(tr("OpenCL kernels not compiled (%1); using the reference backend").arg(error));
+    }
+    configure(m_settings);
+    if (error.isEmpty())
+        emit notice(tr("OpenCL kernels compiled: running on %1").arg(m_backendLabel));
+    {
+        std::lock_guard lock(m_frameMutex);
+        m_dirty = true;
+    }
+    offerFrame();
 }
 
 void SimulationWorker::load(const model::Scene& scene, const model::EngineSettings& settings, const model::StateSlotPtr& start)

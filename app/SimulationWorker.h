@@ -4,6 +4,7 @@
 // between steps, and hands out immutable frames. Frames do not queue: a new frame is made only
 // once the GUI has taken the previous one. (Qt's mandelbrot example coalesces requests instead,
 // through its `restart` flag.)
+#include "app/KernelWarmUp.h"
 #include "model/EngineSettings.h"
 #include "model/Frame.h"
 #include "model/SceneScript.h"
@@ -71,6 +72,9 @@ private:
     // A new simulation with these settings, carrying `state` when given (on the reference backend
     // if the chosen one cannot hold it); replaces the live one only on success. Throws otherwise.
     void build(const model::EngineSettings& settings, const sim::SimulationState* state);
+    // The warm-up build() started is over: the simulation moves to the device (on an error, build()
+    // falls back and says why).
+    void kernelsCompiled(const QString& error);
     bool running() const { return m_playing || m_stroking; }
     void feedPen();
     bool driveGather();  // the app's gather, if one is under way; whether it drove
@@ -87,6 +91,8 @@ private:
     model::EngineSettings m_settings;
     QString m_backendLabel;
     QTimer m_stepTimer;
+    KernelWarmUp m_warmUp;
+    bool m_warmUpFailed = false;
     QElapsedTimer m_clock;         // paces playing to real time: one dt of simulated time per dt
     qint64 m_nextStepAt = 0;       // ms on m_clock
     bool m_playing = false;

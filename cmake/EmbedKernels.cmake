@@ -3,13 +3,16 @@
 string(REPLACE "|" ";" SOURCES "${SOURCES}")
 set(body "")
 set(table "")
+set(everything "")
 foreach(file IN LISTS SOURCES)
   get_filename_component(name "${file}" NAME)
   file(READ "${file}" text)
+  string(APPEND everything "${name}\n${text}")
   string(MAKE_C_IDENTIFIER "${name}" id)
   string(APPEND body "const char ${id}[] = R\"vfcl(${text})vfcl\";\n")
   string(APPEND table "    {\"${name}\", ${id}},\n")
 endforeach()
+string(SHA1 digest "${everything}")
 file(WRITE "${OUTPUT}.tmp" "// Generated from the .cl files beside the OpenCL host code. Do not edit.
 #include \"sim/opencl/KernelSources.h\"
 
@@ -38,6 +41,11 @@ std::string joinedKernelSources(std::initializer_list<std::string_view> names)
         joined.append(text).append(\"\\n\");
     }
     return joined;
+}
+
+std::string_view kernelSourcesDigest()
+{
+    return \"${digest}\";
 }
 
 } // namespace vf::sim::opencl

@@ -13,4 +13,8 @@ std::string_view kernelSource(std::string_view name);
 // name that is not embedded (a build mistake, not a user error).
 std::string joinedKernelSources(std::initializer_list<std::string_view> names);
 
+// The SHA-1 of every kernel file's name and text, taken when they were embedded: what compiled
+// kernels depend on, beside the device and its driver.
+std::string_view kernelSourcesDigest();
+
 } // namespace vf::sim::opencl

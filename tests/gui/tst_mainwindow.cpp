@@ -10,6 +10,7 @@
 #include "app/AnimationDialog.h"
 #include "app/ExportDialog.h"
 #include "app/Folders.h"
+#include "app/KernelWarmUp.h"
 #include "app/MainWindow.h"
 #include "app/Recovery.h"
 #include "model/ProjectFile.h"
@@ -99,6 +100,9 @@ private slots:
     {
         QVERIFY(m_dir.isValid());
         test::useTestSettings("tst_mainwindow", m_dir);
+        // The cases on OpenCL start on the device, as a launch after the first does
+        // (tst_kernelwarmup tests the first).
+        QCOMPARE(KernelWarmUp::prepare(std::nullopt), QString());
         m_scenePath = m_dir.filePath(QStringLiteral("small.vfscene"));
         QCOMPARE(model::writeSceneFile(smallScene(), m_scenePath), QString());
     }
