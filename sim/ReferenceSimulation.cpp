@@ -77,6 +77,7 @@ SimulationState ReferenceSimulation::snapshot() const
 void ReferenceSimulation::restore(const SimulationState& state)
 {
     validateState(state, std::numeric_limits<std::size_t>::max());  // host memory is the limit
+    m_layersPressed = 0.0;
     if (m_fluid) {
         m_fluid->setState(fluidOnGrid(state, m_settings.fluid));
         m_pendingStylus = state.pendingStylus;

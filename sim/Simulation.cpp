@@ -115,12 +115,16 @@ DropReport Simulation::drop(Vec2 center, double radius)
                           4.0 * double(FLT_EPSILON) * (std::max(std::abs(center.x), std::abs(center.y)) + radius);
     const Polygon dropped = circle(center, std::max(radius - inside, radius / 2.0), settings().tracking.maxSpacing);
     growTargetAreasAround(center, std::numbers::pi * radius * radius);
-    // The push leaves a layer at distance d from the centre d/√(d² + r²) as thick: 0.95 of it at 3r,
-    // where it then lies at √10·r. Farther out it presses layers too little to matter, so the
-    // widening looks within those distances only and a drop into a big sheet costs little more
-    // than the push.
+    // The push leaves a layer at distance d from the centre d/√(d² + r²) as thick: 3/√10 of it at
+    // 3r, where it then lies at √10·r. So the widening looks within those distances, and a drop
+    // into a big sheet costs little more than the push; but layers farther out are pressed by every
+    // drop, so once the drops since the last widening of all the ink may have pressed them to half
+    // their thickness, this one widens all of it.
     const auto around = [center](double reach) { return Window{center - Vec2(reach), center + Vec2(reach)}; };
-    separateLayers(around(3.0 * radius));
+    const double pressedOutside = 3.0 / std::sqrt(10.0);
+    const bool everywhere = m_layersPressed * pressedOutside < 0.5;
+    separateLayers(everywhere ? std::nullopt : std::optional(around(3.0 * radius)));
+    m_layersPressed = (everywhere ? 1.0 : m_layersPressed) * pressedOutside;
     const bool refined = pushOutward(center, radius);
     DropReport report;
     report.region = addRegion({dropped});

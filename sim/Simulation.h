@@ -133,6 +133,9 @@ public:
 protected:
     PhaseClock m_phases;
     std::optional<BodyForce> m_pendingForce;  // drive(), for the next step's substeps
+    // The least fraction of its thickness a layer may have kept under the drops since all the ink
+    // was last widened (drop()); 0 after a restore, whose layers are unknown.
+    double m_layersPressed = 0.0;
 
     // The two backend parts of drop(): raise the area-correction target of every contour winding
     // around `p` by `area`, and move every contour by the drop's push, refining under it (false

@@ -137,6 +137,7 @@ SimulationState OpenClSimulation::snapshot() const
 void OpenClSimulation::restore(const SimulationState& state)
 {
     validateState(state, m_contours->deviceVertexLimit());
+    m_layersPressed = 0.0;
     m_contours->write(state.contours);
     if (m_fluid) {
         const FluidState* fluid = fluidOnGrid(state, m_settings.fluid);
