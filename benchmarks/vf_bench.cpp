@@ -248,16 +248,23 @@ void bareRk4KernelBenchmark(benchmark::State& state, std::int64_t target)
 
 // ---- FullStep -----------------------------------------------------------------------------------
 
+// The backend's simulation of the scene, or null with the benchmark skipped where it has no device.
+std::unique_ptr<Simulation> makeOrSkip(benchmark::State& state, const Backend& backend, const Layout& layout)
+{
+    try {
+        return backend.make(settingsFor(layout));
+    } catch (const opencl::DeviceError& e) {
+        state.SkipWithError((std::string("OpenCL backend skipped: ") + e.what()).c_str());
+        return nullptr;
+    }
+}
+
 void fullStepBenchmark(benchmark::State& state, const Backend& backend, std::int64_t target)
 {
     const Layout layout = layoutFor(target);
-    std::unique_ptr<Simulation> sim;
-    try {
-        sim = backend.make(settingsFor(layout));
-    } catch (const opencl::DeviceError& e) {
-        state.SkipWithError((std::string("OpenCL backend skipped: ") + e.what()).c_str());
+    const std::unique_ptr<Simulation> sim = makeOrSkip(state, backend, layout);
+    if (!sim)
         return;
-    }
     int step = 0;
     const auto stirAndStep = [&] {
         sim->stylus(penAt(step), penAt(step + 1), kPenRadius, kDt);
@@ -415,13 +422,9 @@ void breakdownBenchmark(benchmark::State& state, std::int64_t target)
 void dropBenchmark(benchmark::State& state, const Backend& backend, std::int64_t target)
 {
     const Layout layout = layoutFor(target);
-    std::unique_ptr<Simulation> sim;
-    try {
-        sim = backend.make(settingsFor(layout));
-    } catch (const opencl::DeviceError& e) {
-        state.SkipWithError((std::string("OpenCL backend skipped: ") + e.what()).c_str());
+    const std::unique_ptr<Simulation> sim = makeOrSkip(state, backend, layout);
+    if (!sim)
         return;
-    }
     int step = 0;
     for (; step < kStirSteps; ++step)
         sim->stylus(penAt(step), penAt(step + 1), kPenRadius, kDt), sim->step(kDt);
