@@ -106,12 +106,26 @@ bool MarblingDrag::inWater() const
     return mode == model::CombStroke::Mode::Water;
 }
 
+model::CombStroke MarblingDrag::combAsDragged() const
+{
+    model::CombStroke comb = m_comb;
+    comb.from = m_press;
+    comb.to = m_at;
+    return comb;
+}
+
 model::Stroke MarblingDrag::tool() const
 {
     if (m_tool == Tool::Comb) {
-        model::CombStroke comb = m_comb;
-        comb.from = m_press;
-        comb.to = m_at;
+        model::CombStroke comb = combAsDragged();
+        if (comb.mode == model::CombStroke::Mode::Exact) {
+            // The ink at the tines moves as far as the pointer did: the map moves it by the
+            // stroke's length times every tine's pull there, so the stroke is that much shorter
+            // (about its middle, where a wavy comb's wave is set).
+            const sim::Vec2 middle = 0.5 * (m_press + m_at), half = 0.5 * (m_at - m_press) / comb.map().mostPull();
+            comb.from = middle - half;
+            comb.to = middle + half;
+        }
         return comb;
     }
     if (m_tool == Tool::CircularComb) {
@@ -134,7 +148,7 @@ std::vector<sim::StylusSegment> MarblingDrag::pens(double seconds, double radius
         return pens;
     if (m_tool == Tool::Comb) {
         // The tines across the line from the press to the pointer, following the pointer.
-        const sim::Comb comb = std::get<model::CombStroke>(tool()).map();
+        const sim::Comb comb = combAsDragged().map();
         std::vector<sim::Vec2> now;
         for (int k = 0; k < comb.tines; ++k)
             now.push_back(comb.tineStart(k) + (m_at - m_press));
@@ -180,13 +194,14 @@ void MarblingDrag::paint(QPainter& painter, const QTransform& toWidget, const QC
     painter.setBrush(Qt::NoBrush);
     const double scale = toWidget.m11();
     const QPointF centre = toWidget.map(QPointF(m_press.x, m_press.y));
-    const model::Stroke dragged = tool();
-    if (const auto* comb = std::get_if<model::CombStroke>(&dragged)) {
+    if (m_tool == Tool::Comb) {
+        const model::CombStroke comb = combAsDragged();
         painter.setPen(dashed);
-        for (int k = 0; k < comb->tines; ++k)
-            painter.drawPolyline(polygon(comb->tineStroke(k).points, toWidget));
+        for (int k = 0; k < comb.tines; ++k)
+            painter.drawPolyline(polygon(comb.tineStroke(k).points, toWidget));
         return;
     }
+    const model::Stroke dragged = tool();
     if (const auto* comb = std::get_if<model::CircularCombStroke>(&dragged)) {
         for (int k = 0; k < comb->tines; ++k) {
             const double r = comb->innerRadius + k * comb->spacing;

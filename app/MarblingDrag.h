@@ -35,7 +35,8 @@ public:
     bool acts() const { return m_moved && (m_tool == Tool::Comb || m_swept != 0.0); }
     bool inWater() const;
 
-    // The exact tool as dragged so far: a CombStroke, CircularCombStroke or SwirlStroke.
+    // The exact tool as dragged so far: a CombStroke, CircularCombStroke or SwirlStroke. An exact
+    // comb's stroke is shortened so that the ink at its tines moves as far as the pointer did.
     model::Stroke tool() const;
     // In the water: each pen's move since the pens last moved, taking `seconds`, the comb's tines
     // styluses of `radius` (a swirl's rings are as wide as their spacing). Empty while nothing moved.
@@ -46,6 +47,9 @@ public:
     void paint(QPainter& painter, const QTransform& toWidget, const QColor& colour) const;
 
 private:
+    // The comb with its tines from the press to the pointer, as the preview and the pens have them.
+    model::CombStroke combAsDragged() const;
+
     Tool m_tool = Tool::Comb;
     model::CombStroke m_comb;
     model::CircularCombStroke m_circularComb;

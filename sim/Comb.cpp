@@ -64,4 +64,18 @@ Vec2 Comb::operator()(Vec2 p) const
     return waved(straight + shift * along, 1.0);
 }
 
+double Comb::mostPull() const
+{
+    if (!(sharpness > 0.0))
+        return 1.0;  // a map that moves nothing but the tines' own lines
+    double most = 0.0;
+    for (int k = 0; k < tines; ++k) {
+        double pull = 0.0;
+        for (int j = 0; j < tines; ++j)
+            pull += sharpness / (std::abs(j - k) * spacing + sharpness);
+        most = std::max(most, pull);
+    }
+    return most;
+}
+
 } // namespace vf::sim

@@ -28,6 +28,9 @@ struct Comb {
     Vec2 operator()(Vec2 p) const;
     // Drawn back, with its wave where it was (t and n both turn over, so the phase does).
     Comb inverse() const { return Comb{to, from, tines, spacing, sharpness, amplitude, wavelength, -phase}; }
+    // How far the ink that moves most (at a tine) moves, in stroke lengths: the sum of every tine's
+    // pull there, 1 for one tine and more for several (or for a spacing under the sharpness).
+    double mostPull() const;
     // Where tine k starts (on the line through `from` across the stroke), before the wave.
     Vec2 tineStart(int k) const;
     // Where the segment a–b crosses a tine, the one crossing nearest its middle, as a fraction along

@@ -284,15 +284,22 @@ private slots:
         QCOMPARE(w.document().undoStack().count(), 1);
         QCOMPARE(w.document().undoStack().text(0), QStringLiteral("Comb"));
         const Geometry combed = geometry(w);
-        // The comb from and to where the pointer was, whole pixels mapped back onto the canvas.
+        // The comb along the drag from where the pointer was pressed to where it was released (whole
+        // pixels mapped back onto the canvas), shortened about its middle so that the ink at the
+        // middle tine moves the drag's length: the map moves it by its own pull (1) and by the two
+        // tines 0.08 beside it (0.02 / (0.08 + 0.02) each), 1.4 stroke lengths in all.
         const QPointF a = w.canvas().mapToCanvas(QPointF(from)), b = w.canvas().mapToCanvas(QPointF(to));
-        const sim::Comb comb{{a.x(), a.y()}, {b.x(), b.y()}, 3, 0.08, 0.02};
+        const sim::Vec2 middle(0.5 * (a.x() + b.x()), 0.5 * (a.y() + b.y())), drag(b.x() - a.x(), b.y() - a.y());
+        const sim::Comb comb{middle - drag / 2.8, middle + drag / 2.8, 3, 0.08, 0.02};
         std::vector<sim::Vec2> expected;
         for (const sim::Vec2& p : before[0][0])
             expected.push_back(comb(p));
         // Every vertex the circle had, moved by the exact comb, lies on the combed contour.
         const double off = sim::directedHausdorffDistance(expected, combed[0][0]);
         QVERIFY2(off < 1e-6, qPrintable(QString::number(off)));
+        // Ink on the middle tine's path moves as far as the pointer did.
+        const sim::Vec2 onTine = comb.tineStart(1) + 0.3 * drag;
+        QVERIFY(std::abs(glm::distance(comb(onTine), onTine) - glm::length(drag)) < 1e-9);
         QVERIFY(sim::hausdorffDistance(combed[0][0], before[0][0]) > 0.05);
         QVERIFY(w.canvas().grab().toImage() != still);
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);

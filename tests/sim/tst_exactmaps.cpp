@@ -159,6 +159,23 @@ private slots:
     }
 
     // Where a segment crosses the tines' lines (the map's creases): the crossing nearest its middle.
+    void mostPullIsWhatTheInkAtATineMoves()
+    {
+        const sim::Comb one{{0.2, 0.5}, {0.5, 0.5}, 1, 0.1, 0.02};
+        QCOMPARE(one.mostPull(), 1.0);
+        // Eight tines: the pull is largest at the two middle ones, with three on one side and four
+        // on the other.
+        const sim::Comb eight{{0.2, 0.5}, {0.5, 0.5}, 8, 0.1, 0.02};
+        double middle = 0.0;
+        for (int j = 0; j < 8; ++j)
+            middle += 0.02 / (std::abs(j - 3) * 0.1 + 0.02);
+        QCOMPARE(eight.mostPull(), middle);
+        const sim::Vec2 onTine = eight.tineStart(3) + sim::Vec2(0.1, 0.0);
+        QVERIFY(std::abs(glm::distance(eight(onTine), onTine) - 0.3 * middle) < 1e-12);
+        for (int k = 0; k < 8; ++k)  // no tine's ink moves farther
+            QVERIFY(glm::distance(eight(eight.tineStart(k)), eight.tineStart(k)) <= 0.3 * middle + 1e-12);
+    }
+
     void tineCrossingIsNearestTheMiddle()
     {
         const Comb comb{{0.0, 0.5}, {1.0, 0.5}, 3, 0.1, 0.02};  // tines along y = 0.4, 0.5 and 0.6
