@@ -300,23 +300,30 @@ private:
             ++it->second;
     }
 
-    // Children of the current element up to its end tag; depth counts the groups around them.
-    void readChildren(const Context& parent, int depth = 0)
+    // Children of the current element up to its end tag, and theirs. The open groups are a stack
+    // here, not the call stack: a frame of this function (inlined callees, sanitizer redzones)
+    // can take kilobytes, and hostile files nest groups as deep as the limit.
+    void readChildren(const Context& root)
     {
-        if (depth > kMaxGroupDepth)
-            fail(u"groups nested deeper than %1 levels"_s.arg(kMaxGroupDepth));
-        while (m_xml.readNextStartElement()) {
+        std::vector<Context> open{root};  // the element's context, then each open group's
+        while (!open.empty()) {
+            if (!m_xml.readNextStartElement()) {  // the innermost one's end tag
+                open.pop_back();
+                continue;
+            }
             const QString tag = m_xml.name().toString();
             if (m_xml.namespaceUri() != m_svgNamespace || isNeverDrawn(tag)) {
                 m_xml.skipCurrentElement();  // another vocabulary (Inkscape's editor state), or resources
                 continue;
             }
             enterElement();
-            const std::optional<Context> context = childContext(parent);
+            std::optional<Context> context = childContext(open.back());
             if (!context) {
                 m_xml.skipCurrentElement();
             } else if (tag == u"g" || tag == u"a") {
-                readChildren(*context, depth + 1);
+                if (int(open.size()) > kMaxGroupDepth)
+                    fail(u"groups nested deeper than %1 levels"_s.arg(kMaxGroupDepth));
+                open.push_back(std::move(*context));
             } else if (tag == u"path" || tag == u"polygon" || tag == u"rect" || tag == u"circle" || tag == u"ellipse") {
                 importShape(tag, *context);
                 m_xml.skipCurrentElement();  // children such as <title> or <animate>
