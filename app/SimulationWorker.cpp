@@ -75,13 +75,13 @@ void SimulationWorker::kernelsCompiled(const QString& error)
 {
     if (!m_simulation || m_settings.backend == QLatin1String("reference"))
         return;  // chosen meanwhile: it runs already
-    if (!error.isEmpty()) {
-        m_warmUpFailed = true;  // making the backend will say why and fall back, without a warm-up
-        emit notice(tr("OpenCL kernels not compiled (%1); using the reference backend").arg(error));
-    }
+    // After a failed warm-up the backend is made without one: where the device cannot run,
+    // build() says why as it falls back, and that is the one message.
+    m_warmUpFailed = !error.isEmpty();
     configure(m_settings);
-    if (error.isEmpty())
-        emit notice(tr("OpenCL kernels compiled: running on %1").arg(m_backendLabel));
+    if (m_simulation && m_simulation->backendName() != "reference")
+        emit notice(error.isEmpty() ? tr("OpenCL kernels compiled: running on %1").arg(m_backendLabel)
+                                    : tr("OpenCL warm-up failed (%1); running on %2").arg(error, m_backendLabel));
     {
         std::lock_guard lock(m_frameMutex);
         m_dirty = true;

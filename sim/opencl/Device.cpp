@@ -53,10 +53,15 @@ cl::Device choose(const std::vector<cl::Device>& devices, std::optional<int> ind
 
 Device Device::open(std::optional<int> index)
 {
+    return Device(find(index));
+}
+
+cl::Device Device::find(std::optional<int> index)
+{
     try {
         if (!index)
             index = indexFromEnvironment();
-        return Device(choose(allDevices(), index));
+        return choose(allDevices(), index);
     } catch (const cl::Error& e) {
         // No ICD, or an ICD with no platform: the loader answers CL_PLATFORM_NOT_FOUND_KHR.
         throw DeviceError("no OpenCL device available (" + std::string(e.what()) + ", error " +
@@ -73,7 +78,12 @@ Device::Device(cl::Device device)
 
 std::string Device::name() const
 {
-    std::string name = m_device.getInfo<CL_DEVICE_NAME>();
+    return name(m_device);
+}
+
+std::string Device::name(const cl::Device& device)
+{
+    std::string name = device.getInfo<CL_DEVICE_NAME>();
     while (!name.empty() && name.back() == '\0')
         name.pop_back();
     return name;

@@ -24,6 +24,9 @@ public:
     // environment variable VF_OPENCL_DEVICE when set, else the first GPU, else the first CPU.
     // Throws DeviceError.
     static Device open(std::optional<int> index = std::nullopt);
+    // The device open() would pick, for its facts alone: no context, no queue.
+    static cl::Device find(std::optional<int> index = std::nullopt);
+    static std::string name(const cl::Device& device);
 
     const cl::Context& context() const { return m_context; }
     const cl::Device& device() const { return m_device; }

@@ -11,11 +11,11 @@ namespace vf::sim::opencl {
 
 std::string kernelIdentity(std::optional<int> device)
 {
-    const Device opened = Device::open(device);
-    std::string version = opened.device().getInfo<CL_DRIVER_VERSION>();
+    const cl::Device found = Device::find(device);
+    std::string version = found.getInfo<CL_DRIVER_VERSION>();
     while (!version.empty() && version.back() == '\0')
         version.pop_back();
-    return std::string(kernelSourcesDigest()) + ' ' + opened.name() + ' ' + version;
+    return std::string(kernelSourcesDigest()) + ' ' + Device::name(found) + ' ' + version;
 }
 
 void warmUpKernels(std::optional<int> device, const std::atomic<bool>& stop)

@@ -6,6 +6,7 @@
 #include "sim/Comb.h"
 #include "sim/Whirl.h"
 #include "sim/opencl/Device.h"
+#include "sim/opencl/KernelSources.h"
 #include "sim/opencl/OpenClSimulation.h"
 #include "sim/opencl/WarmUp.h"
 
@@ -47,8 +48,10 @@ private slots:
     {
         const std::string identity = sim::opencl::kernelIdentity(std::nullopt);
         QVERIFY(identity == sim::opencl::kernelIdentity(std::nullopt));
+        const std::string_view digest = sim::opencl::kernelSourcesDigest();
+        QCOMPARE(digest.size(), std::size_t(40));  // SHA-1, in hexadecimal
+        QVERIFY2(identity.starts_with(digest), identity.c_str());
         QVERIFY2(identity.find(sim::opencl::Device::open().name()) != std::string::npos, identity.c_str());
-        QVERIFY2(identity.size() > 40, identity.c_str());  // the SHA-1 first
     }
 
     void aStoppedWarmUpDoesNothing()
