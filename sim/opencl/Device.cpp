@@ -78,15 +78,16 @@ Device::Device(cl::Device device)
 
 std::string Device::name() const
 {
-    return name(m_device);
+    return text(m_device, CL_DEVICE_NAME);
 }
 
-std::string Device::name(const cl::Device& device)
+std::string Device::text(const cl::Device& device, cl_device_info what)
 {
-    std::string name = device.getInfo<CL_DEVICE_NAME>();
-    while (!name.empty() && name.back() == '\0')
-        name.pop_back();
-    return name;
+    std::string text;
+    device.getInfo(what, &text);
+    while (!text.empty() && text.back() == '\0')
+        text.pop_back();
+    return text;
 }
 
 bool Device::hasFp64() const

@@ -26,7 +26,9 @@ public:
     static Device open(std::optional<int> index = std::nullopt);
     // The device open() would pick, for its facts alone: no context, no queue.
     static cl::Device find(std::optional<int> index = std::nullopt);
-    static std::string name(const cl::Device& device);
+    // A string fact of a device (CL_DEVICE_NAME, CL_DRIVER_VERSION, ...) without the NULs some
+    // drivers leave at its end.
+    static std::string text(const cl::Device& device, cl_device_info what);
 
     const cl::Context& context() const { return m_context; }
     const cl::Device& device() const { return m_device; }

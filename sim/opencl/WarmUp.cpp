@@ -12,10 +12,8 @@ namespace vf::sim::opencl {
 std::string kernelIdentity(std::optional<int> device)
 {
     const cl::Device found = Device::find(device);
-    std::string version = found.getInfo<CL_DRIVER_VERSION>();
-    while (!version.empty() && version.back() == '\0')
-        version.pop_back();
-    return std::string(kernelSourcesDigest()) + ' ' + Device::name(found) + ' ' + version;
+    return std::string(kernelSourcesDigest()) + ' ' + Device::text(found, CL_DEVICE_NAME) + ' ' +
+           Device::text(found, CL_DRIVER_VERSION);
 }
 
 void warmUpKernels(std::optional<int> device, const std::atomic<bool>& stop)
