@@ -5,7 +5,7 @@
 
 namespace vf::sim {
 
-void correctArea(Polygon& polygon, double targetArea, double shortEdge)
+void correctArea(Polygon& polygon, double targetArea, double shortEdge, const std::vector<bool>& held, double maxOffset)
 {
     const std::size_t n = polygon.size();
     if (n < 3)
@@ -13,6 +13,10 @@ void correctArea(Polygon& polygon, double targetArea, double shortEdge)
     Polygon direction(n);
     double rate = 0.0;  // Σ g_i·u_i: the area's rate of change under the offset
     for (std::size_t i = 0; i < n; ++i) {
+        if (held[i]) {
+            direction[i] = Vec2(0.0);
+            continue;
+        }
         const Vec2 d = polygon[(i + 1) % n] - polygon[(i + n - 1) % n];
         const Vec2 gradient = 0.5 * Vec2(d.y, -d.x);  // ∂A/∂v_i for the shoelace area
         const double length = std::sqrt(gradient.x * gradient.x + gradient.y * gradient.y);
@@ -29,7 +33,7 @@ void correctArea(Polygon& polygon, double targetArea, double shortEdge)
     if (disc < 0.0)
         return;
     // The numerically stable form of the smaller root.
-    const double lambda = -2.0 * c / (b + std::sqrt(disc));
+    const double lambda = std::clamp(-2.0 * c / (b + std::sqrt(disc)), -maxOffset, maxOffset);
     for (std::size_t i = 0; i < n; ++i)
         polygon[i] += lambda * direction[i];
 }

@@ -420,13 +420,25 @@ bool ContourTracker::refineAll(const ExactMotion& motion, const Flow& flow, doub
         withinBudget = refine(c, motion, budget) && withinBudget;
         requireFinite(c);  // split and recentred vertices come from the motion too
         total += c.positions.size();
-        if (m_settings.areaCorrection) {
-            const PhaseClock::Scope timing(m_clock, Phase::Area);
-            correctArea(c.positions, c.targetArea, m_settings.minSpacing());
-        }
     }
     m_vertexCount = total;
+    if (m_settings.areaCorrection)
+        correctAreas();
     return withinBudget;
+}
+
+void ContourTracker::correctAreas()
+{
+    const PhaseClock::Scope timing(m_clock, Phase::Area);
+    m_grid.build(m_contours, m_settings.proximityRadius(), m_settings.proximityCell());
+    std::vector<bool> held;
+    for (std::size_t k = 0; k < m_contours.size(); ++k) {
+        Contour& c = m_contours[k];
+        held.resize(c.positions.size());
+        for (std::size_t i = 0; i < held.size(); ++i)
+            held[i] = m_grid.nearestOtherPart(k, i) < m_settings.areaHoldDistance();
+        correctArea(c.positions, c.targetArea, m_settings.minSpacing(), held, m_settings.areaCorrectionStep());
+    }
 }
 
 bool ContourTracker::refine(Contour& contour, const ExactMotion& motion, std::size_t budget)

@@ -78,6 +78,9 @@ public:
 private:
     bool applyMotion(const ExactMotion& motion, const Flow& flow, double t);
     bool refineAll(const ExactMotion& motion, const Flow& flow, double t);
+    // The area correction of every contour (docs/method.md, "Area correction"): a vertex with
+    // another part of any contour within areaHoldDistance stays where it is.
+    void correctAreas();
     bool refine(Contour& contour, const ExactMotion& motion, std::size_t budget);
 
     TrackingSettings m_settings;

@@ -32,6 +32,12 @@ struct TrackingSettings {
     // The proximity grid's cells: half the radius, searched ring by ring outward.
     double proximityCell() const { return proximityRadius() / 2.0; }
     double minSpacing() const { return maxSpacing / 16.0; }      // ε of eq. 3
+    // The area correction leaves a vertex where it is when another part of any contour lies within
+    // d_max of it, and moves the others by at most ε/4 a step. No edge is longer than d_max, so a
+    // moved vertex's other ink is at least √3/2·d_max away, far beyond two such moves: the
+    // correction cannot carry one contour across another (docs/method.md, "Area correction").
+    double areaHoldDistance() const { return maxSpacing; }
+    double areaCorrectionStep() const { return minSpacing() / 4.0; }
 
     int smoothingRadius = 4;  // w of eq. 6, in vertices; σ = w / 2
 

@@ -181,6 +181,7 @@ struct DeviceContours::Impl {
 
     bool move(const FlowBinding& flow, const Motion& motion, bool startKnown = false);
     void computeSpacing(const FlowBinding& flow);
+    void findNearestOtherParts(const Grid& grid);
     void buildGrid(const Grid& grid);
     bool refine(const FlowBinding& flow, const Motion& motion);
     struct Pass {
@@ -197,7 +198,7 @@ struct DeviceContours::Impl {
     void clearPassFlags();
     Pass readPass();
     void adopt(std::size_t total);
-    void contourTerms(cl_int mode, Vec2 point, double dropArea);
+    void contourTerms(cl_int mode, Vec2 point, double dropArea, bool hold);
     void correctAreas();
     void enqueueSnapshot(Snapshot& s);
     std::vector<Contour> toContours(const Snapshot& s) const;
@@ -424,11 +425,7 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
     const auto radius = cl_float(settings.proximityRadius());
     if (settings.proximity) {
         const PhaseClock::Scope timing(clock, Phase::Proximity);
-        buildGrid(g);
-        launch(queue, nearestOtherPart, laneGroups(g.buckets()), radius, work, motionScratch(), cl_uint(g.buckets()),
-               contourLength, back.contour);
-        launch(queue, nearestBeyond, laneGroups(g.buckets()), g, radius, work, motionScratch(), cl_uint(g.buckets()),
-               contourLength, back.contour);
+        findNearestOtherParts(g);
     }
     const PhaseClock::Scope timing(clock, Phase::Spacing);
     launch(queue, rawSpacing, laneGroups(vertices), flow, front.motion, front.contour, contourOffset, contourCount, n,
@@ -438,6 +435,18 @@ void DeviceContours::Impl::computeSpacing(const FlowBinding& flow)
     launch(queue, smoothSpacing, laneGroups(vertices), back.spacing, front.contour, contourOffset, contourCount, n,
            weights, cl_int(smoothingRadius), cl_float(settings.minSpacing()), cl_float(settings.maxSpacing),
            front.spacing);
+}
+
+// Each vertex's nearest other part within the search radius (ProximityGrid::nearestOtherPart):
+// the squared distance in back.contour, at the vertex's slot in tileOffset.
+void DeviceContours::Impl::findNearestOtherParts(const Grid& g)
+{
+    const auto radius = cl_float(settings.proximityRadius());
+    buildGrid(g);
+    launch(queue, nearestOtherPart, laneGroups(g.buckets()), radius, work, motionScratch(), cl_uint(g.buckets()),
+           contourLength, back.contour);
+    launch(queue, nearestBeyond, laneGroups(g.buckets()), g, radius, work, motionScratch(), cl_uint(g.buckets()),
+           contourLength, back.contour);
 }
 
 void DeviceContours::Impl::buildGrid(const Grid& g)
@@ -602,21 +611,29 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
     return changed;
 }
 
-void DeviceContours::Impl::contourTerms(cl_int mode, Vec2 point, double dropArea)
+// With `hold`, the vertices findNearestOtherParts found other ink near stay still (contours_area.cl).
+void DeviceContours::Impl::contourTerms(cl_int mode, Vec2 point, double dropArea, bool hold)
 {
     const cl_float2 p{{cl_float(point.x), cl_float(point.y)}};
     const auto shortEdge = cl_float(settings.minSpacing());
-    launch(queue, contourTermTiles, vertices, mode, p, shortEdge, front.motion, front.contour, contourOffset, contourCount,
-           cl_uint(vertices), tileTotals);
-    launch(queue, contourTermSums, regions.size(), mode, p, shortEdge, Accumulated{dropArea, fp64}, front.motion,
-           contourOffset, contourCount, cl_uint(regions.size()), tileTotals, contourTarget, contourLambda);
+    const auto holdWithin = cl_float(settings.areaHoldDistance());
+    const auto within2 = holdWithin * holdWithin;
+    launch(queue, contourTermTiles, vertices, mode, p, shortEdge, cl_int(hold), within2, tileOffset, back.contour,
+           front.motion, front.contour, contourOffset, contourCount, cl_uint(vertices), tileTotals);
+    launch(queue, contourTermSums, regions.size(), mode, p, shortEdge, cl_int(hold), within2, tileOffset, back.contour,
+           cl_float(settings.areaCorrectionStep()), Accumulated{dropArea, fp64}, front.motion, contourOffset,
+           contourCount, cl_uint(regions.size()), tileTotals, contourTarget, contourLambda);
 }
 
+// As ContourTracker::correctAreas: a vertex with another part within the hold distance stays.
 void DeviceContours::Impl::correctAreas()
 {
-    contourTerms(termsArea, Vec2(0.0), 0.0);
-    launch(queue, correctArea, vertices, cl_float(settings.minSpacing()), front.motion, front.contour, contourOffset,
-           contourCount, cl_uint(vertices), contourLambda, motionScratch());
+    findNearestOtherParts(grid());
+    contourTerms(termsArea, Vec2(0.0), 0.0, true);
+    const auto holdWithin = cl_float(settings.areaHoldDistance());
+    launch(queue, correctArea, vertices, cl_float(settings.minSpacing()), cl_int(1), holdWithin * holdWithin,
+           tileOffset, back.contour, front.motion, front.contour, contourOffset, contourCount, cl_uint(vertices),
+           contourLambda, motionScratch());
     std::swap(front.motion, back.motion);
 }
 
@@ -829,7 +846,7 @@ void DeviceContours::growTargetAreasAround(Vec2 p, double area)
     guarded([&] {
         if (m->regions.empty())
             return;
-        m->contourTerms(termsWinding, p, area);
+        m->contourTerms(termsWinding, p, area, false);
         const std::size_t contours = m->regions.size();
         if (m->fp64) {
             m->queue.enqueueReadBuffer(m->contourTarget, CL_TRUE, 0, contours * sizeof(double), m->targets.data());

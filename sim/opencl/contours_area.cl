@@ -4,7 +4,8 @@
 // either end. All of it in acc_t (double on fp64 devices), in an order fixed by the indices.
 //
 // Two uses: the optional area correction (sim/AreaCorrection: v_i ← v_i + λ·u_i, u_i = g_i /
-// max(|g_i|, shortEdge), g_i = ½·J·(v_{i+1} − v_{i−1}) the area gradient, λ in closed form), and
+// max(|g_i|, shortEdge), g_i = ½·J·(v_{i+1} − v_{i−1}) the area gradient, u_i = 0 where held, λ in
+// closed form), and
 // the winding numbers that raise the area targets of the contours an ink drop lands in.
 // The mode (host-defined codes): TERMS_AREA sums (2·area term, g_i·u_i, 2·area term of the u
 // polygon, 0), TERMS_WINDING (winding contribution of the edge around `point`, 0, 0, 0).
@@ -26,6 +27,18 @@ VF_INLINE acc2 areaGradient(acc2 before, acc2 after)
     return (acc_t)0.5 * (acc2)(d.y, -d.x);
 }
 
+// Which vertices the correction holds still (sim::ContourTracker::correctAreas): with `hold`, those
+// whose nearest other part lies within √holdWithin2, from each vertex's grid slot and each grid
+// entry's squared distance to its nearest other part (float bits), as the proximity search leaves
+// them.
+#define HOLD_ARGS int hold, float holdWithin2, __global const uint *slot, __global const uint *gap2
+#define HOLD_PASS hold, holdWithin2, slot, gap2
+
+VF_INLINE bool heldAt(HOLD_ARGS, uint i)
+{
+    return hold && as_float(gap2[slot[i]]) < holdWithin2;
+}
+
 // How the correction moves a vertex per unit λ: along the unit normal, shorter where the
 // neighbours are closer than `shortEdge` (> 0).
 VF_INLINE acc2 correctionDirection(acc2 gradient, acc_t shortEdge)
@@ -33,8 +46,8 @@ VF_INLINE acc2 correctionDirection(acc2 gradient, acc_t shortEdge)
     return gradient / max(sqrt(dot(gradient, gradient)), shortEdge);
 }
 
-VF_INLINE acc4 contourTerms(int mode, float2 point, float shortEdge, __global const float4 *motion, uint i, uint first,
-                            uint count)
+VF_INLINE acc4 contourTerms(int mode, float2 point, float shortEdge, HOLD_ARGS, __global const float4 *motion, uint i,
+                            uint first, uint count)
 {
     const uint b = nextIn(i, first, count);
     const acc2 p = wide(motion[i]), q = wide(motion[b]);
@@ -51,23 +64,24 @@ VF_INLINE acc4 contourTerms(int mode, float2 point, float shortEdge, __global co
     }
     // Products of floats are exact in double, so the area's shoelace terms carry no rounding there.
     const acc2 g = areaGradient(wide(motion[previousIn(i, first, count)]), q);
-    const acc2 u = correctionDirection(g, shortEdge);
-    const acc2 uNext = correctionDirection(areaGradient(p, wide(motion[nextIn(b, first, count)])), shortEdge);
+    const acc2 u = heldAt(HOLD_PASS, i) ? (acc2)(0) : correctionDirection(g, shortEdge);
+    const acc2 uNext = heldAt(HOLD_PASS, b) ? (acc2)(0)
+                                             : correctionDirection(areaGradient(p, wide(motion[nextIn(b, first, count)])), shortEdge);
     return (acc4)(crossWide(p, q), dot(g, u), crossWide(u, uNext), 0);
 }
 
 #define VF_ADD(a, b) ((a) + (b))
 VF_DEFINE_LOCAL_REDUCE(acc4, sumAcc4, VF_ADD)
 
-VF_KERNEL void contourTermTiles(int mode, float2 point, float shortEdge, __global const float4 *motion, CONTOUR_ARGS, uint n,
-                                __global acc4 *tileTotals)
+VF_KERNEL void contourTermTiles(int mode, float2 point, float shortEdge, HOLD_ARGS, __global const float4 *motion,
+                                CONTOUR_ARGS, uint n, __global acc4 *tileTotals)
 {
     __local acc4 scratch[VF_SCAN_SCRATCH];
     const uint i = get_global_id(0);
     acc4 terms = 0;
     if (i < n) {
         const uint c = contourOf[i];
-        terms = contourTerms(mode, point, shortEdge, motion, i, contourOffset[c], contourCount[c]);
+        terms = contourTerms(mode, point, shortEdge, HOLD_PASS, motion, i, contourOffset[c], contourCount[c]);
     }
     const acc4 total = VF_LOCAL_REDUCE(sumAcc4)(scratch, terms);
     if (get_local_id(0) == 0)
@@ -86,9 +100,10 @@ VF_INLINE acc_t areaLambda(acc_t area, acc_t rate, acc_t directionArea, acc_t ta
     return -2 * c / (b + sqrt(disc));  // the numerically stable form of the smaller root
 }
 
-// Per contour: in TERMS_AREA mode the area correction's λ, in TERMS_WINDING mode the target area
-// grows by winding number × `dropArea`.
-VF_KERNEL void contourTermSums(int mode, float2 point, float shortEdge, acc_t dropArea, __global const float4 *motion,
+// Per contour: in TERMS_AREA mode the area correction's λ (at most `maxOffset` either way), in
+// TERMS_WINDING mode the target area grows by winding number × `dropArea`.
+VF_KERNEL void contourTermSums(int mode, float2 point, float shortEdge, HOLD_ARGS, float maxOffset, acc_t dropArea,
+                               __global const float4 *motion,
                                __global const uint *contourOffset, __global const uint *contourCount, uint contours,
                                __global const acc4 *tileTotals, __global acc_t *targetArea, __global acc_t *lambda)
 {
@@ -100,29 +115,35 @@ VF_KERNEL void contourTermSums(int mode, float2 point, float shortEdge, acc_t dr
     acc4 sum = 0;
     if (wholeFrom < wholeTo) {
         for (uint i = first; i < wholeFrom * VF_LOCAL; ++i)
-            sum += contourTerms(mode, point, shortEdge, motion, i, first, count);
+            sum += contourTerms(mode, point, shortEdge, HOLD_PASS, motion, i, first, count);
         for (uint t = wholeFrom; t < wholeTo; ++t)
             sum += tileTotals[t];
         for (uint i = wholeTo * VF_LOCAL; i < end; ++i)
-            sum += contourTerms(mode, point, shortEdge, motion, i, first, count);
+            sum += contourTerms(mode, point, shortEdge, HOLD_PASS, motion, i, first, count);
     } else {
         for (uint i = first; i < end; ++i)
-            sum += contourTerms(mode, point, shortEdge, motion, i, first, count);
+            sum += contourTerms(mode, point, shortEdge, HOLD_PASS, motion, i, first, count);
     }
     if (mode == TERMS_WINDING)
         targetArea[c] += sum.x * dropArea;
     else
-        lambda[c] = count < 3 ? 0 : areaLambda((acc_t)0.5 * sum.x, sum.y, (acc_t)0.5 * sum.z, targetArea[c]);
+        lambda[c] = count < 3 ? 0
+                              : clamp(areaLambda((acc_t)0.5 * sum.x, sum.y, (acc_t)0.5 * sum.z, targetArea[c]),
+                                      -(acc_t)maxOffset, (acc_t)maxOffset);
 }
 
-VF_KERNEL void correctArea(float shortEdge, __global const float4 *motion, CONTOUR_ARGS, uint n, __global const acc_t *lambda,
-                           __global float4 *corrected)
+VF_KERNEL void correctArea(float shortEdge, HOLD_ARGS, __global const float4 *motion, CONTOUR_ARGS, uint n,
+                           __global const acc_t *lambda, __global float4 *corrected)
 {
     const uint i = get_global_id(0);
     if (i >= n)
         return;
     const uint c = contourOf[i], first = contourOffset[c], count = contourCount[c];
     const float4 m = motion[i];
+    if (heldAt(HOLD_PASS, i)) {
+        corrected[i] = m;
+        return;
+    }
     const acc2 g = areaGradient(wide(motion[previousIn(i, first, count)]), wide(motion[nextIn(i, first, count)]));
     const acc2 p = wide(m) + lambda[c] * correctionDirection(g, shortEdge);
     corrected[i] = (float4)((float)p.x, (float)p.y, m.zw);

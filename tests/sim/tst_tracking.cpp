@@ -1,6 +1,7 @@
 // Contour tracking accuracy (paper §3.1, §3.3; docs/method.md, "Accuracy"), on every backend.
 #include "Backends.h"
 #include "Flows.h"
+#include "StillWater.h"
 
 #include "sim/AnalyticFlow.h"
 #include "sim/AreaCorrection.h"
@@ -96,6 +97,8 @@ private slots:
     void adaptiveSpacingSavesVertices();
 
     void areaCorrectionIsAUniformOffset();
+    void areaCorrectionHoldsBesideOtherInk_data() { test::addBackendRows(); }
+    void areaCorrectionHoldsBesideOtherInk();
 
     void thinNeedlesAreTrimmed_data();
     void thinNeedlesAreTrimmed();
@@ -297,7 +300,7 @@ void TestTracking::areaCorrectionIsAUniformOffset()
     circle.insert(circle.begin() + cluster + 1, {on(0.5 + 1e-7), on(0.5 + 2e-7)});
     Polygon corrected = circle;
     const double target = sim::signedArea(circle) + 2.0 * std::numbers::pi * radius * 1e-6;
-    sim::correctArea(corrected, target, shortEdge);
+    sim::correctArea(corrected, target, shortEdge, std::vector<bool>(circle.size(), false), 1.0);
     QVERIFY(std::abs(sim::signedArea(corrected) - target) < 1e-15);
     const double fine = glm::distance(corrected[10], circle[10]), coarse = glm::distance(corrected.back(), circle.back());
     QVERIFY2(std::abs(fine / coarse - 1.0) < 1e-6, qPrintable(QStringLiteral("fine %1, coarse %2").arg(fine).arg(coarse)));
@@ -305,6 +308,38 @@ void TestTracking::areaCorrectionIsAUniformOffset()
     for (std::size_t i = 0; i < circle.size(); ++i)
         QVERIFY(glm::distance(corrected[i], circle[i]) <= coarse * (1.0 + 1e-9));
     QVERIFY(glm::distance(corrected[cluster + 1], circle[cluster + 1]) < 0.1 * glm::distance(circle[cluster + 1], circle[cluster]));
+}
+
+// Two inks a micrometre apart, the left one short of its area target by four micrometres of offset:
+// the correction makes the area up where no other ink is near and leaves the side facing the
+// other ink where it is (a uniform offset would carry it across).
+void TestTracking::areaCorrectionHoldsBesideOtherInk()
+{
+    QFETCH(QString, backend);
+    VF_REQUIRE_BACKEND(backend);
+    auto simulation = test::stillWater(backend, true);
+    constexpr double gap = 1e-6, shortfall = 4e-6;
+    auto rectangle = [](double left, double right) {
+        return Polygon{{left, 0.3}, {right, 0.3}, {right, 0.7}, {left, 0.7}};
+    };
+    simulation->addRegion({rectangle(0.3, 0.5)});
+    simulation->addRegion({rectangle(0.5 + gap, 0.7)});
+    sim::SimulationState state = simulation->snapshot();
+    const double start = sim::signedArea(state.contours[0].positions);
+    const double target = start + shortfall * 0.8;  // the perimeter times the offset
+    state.contours[0].targetArea = target;
+    simulation->restore(state);
+    for (int step = 0; step < 3; ++step) {
+        simulation->step(0.01);
+        QCOMPARE(test::crossings(test::outlines(*simulation)), std::size_t(0));
+    }
+    const Polygon left = simulation->contours()[0].positions;
+    double right = 0.0;
+    for (const Vec2& v : left)
+        right = std::max(right, v.x);
+    QVERIFY2(right <= 0.5 + 1e-7, qPrintable(QStringLiteral("the side facing the other ink moved to x = %1").arg(right, 0, 'g', 10)));
+    const double made = (sim::signedArea(left) - start) / (target - start);
+    QVERIFY2(std::abs(made - 1.0) < 0.02, qPrintable(QStringLiteral("%1 of the shortfall made up").arg(made)));
 }
 
 void TestTracking::thinNeedlesAreTrimmed_data()
