@@ -29,6 +29,25 @@ QString unusedNameIn(const RegionTable& table, const QString& base)
             return name;
 }
 
+// The name of a new drop (or other numbered ink): `base` in an empty table, else "base N" past
+// the highest N any region has, so drops added to a scene's "drop 1" … "drop 36" go on at "drop 37".
+QString nextNumberedName(const RegionTable& table, const QString& base)
+{
+    const QString prefix = base + u' ';
+    int highest = 0;
+    bool taken = false;
+    for (const RegionLook& r : table) {
+        taken = taken || r.name == base;
+        bool number = false;
+        const int n = r.name.startsWith(prefix) ? r.name.mid(prefix.size()).toInt(&number) : 0;
+        if (number && n > 0)
+            highest = std::max(highest, n);
+    }
+    if (!taken && highest == 0)
+        return base;
+    return QStringLiteral("%1 %2").arg(base).arg(std::max(highest, 1) + 1);
+}
+
 const std::shared_ptr<CommandRecord>& recordAt(const QUndoStack& stack, int i)
 {
     return static_cast<const DocumentCommand*>(stack.command(i))->record();
@@ -359,7 +378,7 @@ void Document::drop(sim::Vec2 center, double radius, const QColor& color)
     pushSimulationCommand(tr("Drop"), [&] {
         m_port.drop(center, radius);
         RegionTable regions = m_regions;
-        regions.push_back({unusedName(tr("drop")), color, true, int(m_regions.size())});
+        regions.push_back({nextNumberedName(m_regions, tr("drop")), color, true, int(m_regions.size())});
         replaceRegions(regions);
     });
 }
@@ -391,7 +410,7 @@ void Document::applyTools(const QString& text, const std::vector<Stroke>& tools)
         for (const Stroke& tool : tools) {
             if (const auto* drop = std::get_if<DropStroke>(&tool)) {
                 m_port.drop(drop->center, drop->radius);
-                regions.push_back({unusedNameIn(regions, tr("drop")), drop->color, true, int(regions.size())});
+                regions.push_back({nextNumberedName(regions, tr("drop")), drop->color, true, int(regions.size())});
             } else if (const auto* comb = std::get_if<CombStroke>(&tool)) {
                 m_port.applyMap(comb->map());
             } else if (const auto* circular = std::get_if<CircularCombStroke>(&tool)) {

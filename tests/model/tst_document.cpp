@@ -135,6 +135,20 @@ private slots:
         QVERIFY(port.state == start);
     }
 
+    // Drops by hand go on from the highest "drop N" a region has (a scene's drops), and start at
+    // "drop" in a document that has none.
+    void dropsGoOnNumbering()
+    {
+        FakePort port;
+        Document doc(port);
+        doc.openScene(sceneWithRegions(2), QStringLiteral("reference"));
+        QVERIFY(doc.setRegionName(0, QStringLiteral("drop 5")));
+        QVERIFY(doc.setRegionName(1, QStringLiteral("drop 12b")));  // not a number: no effect
+        doc.drop({0.3, 0.3}, 0.05, Qt::red);
+        doc.drop({0.6, 0.6}, 0.05, Qt::red);
+        QCOMPARE(names(doc.regions()), QStringList({"drop 5", "drop 12b", "drop 6", "drop 7"}));
+    }
+
     // A pattern is one command: its drops become regions named and coloured as drops are, its
     // passes maps; one undo takes all of it back. A pattern the canvas cannot hold does nothing.
     void patternIsOneCommand()
