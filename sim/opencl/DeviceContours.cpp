@@ -199,6 +199,12 @@ struct DeviceContours::Impl {
     Pass readPass();
     void adopt(std::size_t total);
     void contourTerms(cl_int mode, Vec2 point, double dropArea, bool hold);
+    // The squared distance within which other ink holds a vertex still in the area correction.
+    cl_float holdWithin2() const
+    {
+        const auto within = cl_float(settings.areaHoldDistance());
+        return within * within;
+    }
     void correctAreas();
     void enqueueSnapshot(Snapshot& s);
     std::vector<Contour> toContours(const Snapshot& s) const;
@@ -616,8 +622,7 @@ void DeviceContours::Impl::contourTerms(cl_int mode, Vec2 point, double dropArea
 {
     const cl_float2 p{{cl_float(point.x), cl_float(point.y)}};
     const auto shortEdge = cl_float(settings.minSpacing());
-    const auto holdWithin = cl_float(settings.areaHoldDistance());
-    const auto within2 = holdWithin * holdWithin;
+    const cl_float within2 = holdWithin2();
     launch(queue, contourTermTiles, vertices, mode, p, shortEdge, cl_int(hold), within2, tileOffset, back.contour,
            front.motion, front.contour, contourOffset, contourCount, cl_uint(vertices), tileTotals);
     launch(queue, contourTermSums, regions.size(), mode, p, shortEdge, cl_int(hold), within2, tileOffset, back.contour,
@@ -630,10 +635,9 @@ void DeviceContours::Impl::correctAreas()
 {
     findNearestOtherParts(grid());
     contourTerms(termsArea, Vec2(0.0), 0.0, true);
-    const auto holdWithin = cl_float(settings.areaHoldDistance());
-    launch(queue, correctArea, vertices, cl_float(settings.minSpacing()), cl_int(1), holdWithin * holdWithin,
-           tileOffset, back.contour, front.motion, front.contour, contourOffset, contourCount, cl_uint(vertices),
-           contourLambda, motionScratch());
+    launch(queue, correctArea, vertices, cl_float(settings.minSpacing()), cl_int(1), holdWithin2(), tileOffset,
+           back.contour, front.motion, front.contour, contourOffset, contourCount, cl_uint(vertices), contourLambda,
+           motionScratch());
     std::swap(front.motion, back.motion);
 }
 
