@@ -49,11 +49,13 @@ double recentredFraction(double s, double toA, double toB, double needA, double 
 namespace {
 
 // A contour as a doubly linked ring during refinement, so a split or a collapse costs O(1)
-// wherever it happens. Compacted back into the contour's arrays at the end, in ring order.
+// wherever it happens. Compacted back into the contour's arrays at the end, in ring order. Its
+// vertices are kept current in `grid`, which holds every other contour's too.
 class Ring {
 public:
-    Ring(const Contour& c, bool timeRewinding)
-        : m_position(c.positions), m_previous(c.previous), m_spacing(c.spacing), m_rewind(timeRewinding)
+    Ring(const Contour& c, bool timeRewinding, VertexGrid& grid)
+        : m_position(c.positions), m_previous(c.previous), m_spacing(c.spacing), m_rewind(timeRewinding),
+          m_grid(grid)
     {
         const int n = int(m_position.size());
         m_next.resize(n);
@@ -136,27 +138,16 @@ public:
         m_next[a] = m;
         m_before[b] = m;
         ++m_alive;
+        m_grid.insert(m_position[m]);
         return m;
     }
 
-    // Whether segment p–q, a new edge between vertices endP and endQ that replaces the edges at
-    // vertex v, would cross one of the ring's other edges within `reach` of v along the contour.
-    // Collapses and recentrings move a contour off its true curve, which a tiny fold of it can
-    // then cross; nothing farther along is near enough to matter (proximity refines there).
-    bool crossesNearby(Vec2 p, Vec2 q, int endP, int endQ, int v, int reach) const
+    // Whether removing v, so that its neighbours join, would sweep its edges over a vertex of any
+    // contour: only then could the joining edge cross one (VertexGrid::anyInside).
+    bool removalSweepsInk(int v) const
     {
-        int x = v;
-        for (int k = 0; k < reach; ++k)
-            x = m_before[x];
-        for (int k = 0; k < 2 * reach; ++k, x = m_next[x]) {
-            const int y = m_next[x];
-            if (x == v || y == v || x == endP || y == endP || x == endQ || y == endQ)
-                continue;
-            const Vec2 c = m_position[x], d = m_position[y];
-            if (orientation(p, q, c) * orientation(p, q, d) < 0 && orientation(c, d, p) * orientation(c, d, q) < 0)
-                return true;
-        }
-        return false;
+        const int a = m_before[v], b = m_next[v];
+        return m_grid.anyInside(m_position[a], m_position[v], m_position[b]);
     }
 
     // Whether fraction s of the edge after a lies farther from both its ends, at the start of the
@@ -180,6 +171,7 @@ public:
 
     void unlink(int v)
     {
+        m_grid.erase(m_position[v]);
         m_next[m_before[v]] = m_next[v];
         m_before[m_next[v]] = m_before[v];
         --m_alive;
@@ -190,8 +182,9 @@ public:
     // come out short, a few corrections move the rewound point along the edge by how far the moved
     // one falls from the middle of what both ends allow (recentredFraction; at most
     // recentreCorrections + 1 motions, not a search). Only where that leaves both of v's edges at
-    // least half their spacing does v move (true); else the short edge stays, rather than v being
-    // moved to the same place round after round.
+    // least half their spacing, and neither v's removal nor the new point's insertion sweeps over
+    // ink, does v move (true); else the short edge stays, rather than v being moved to the same
+    // place round after round.
     bool recentre(int v, const MotionMap& map)
     {
         const int a = m_before[v], b = m_next[v];
@@ -211,8 +204,14 @@ public:
             s = recentredFraction(s, toA, toB, needA, needB);
             x = place(s);
         }
-        if (crossesNearby(pa, x, a, v, v, foldReach) || crossesNearby(x, pb, v, b, v, foldReach))
+        if (removalSweepsInk(v))
             return false;
+        m_grid.erase(m_position[v]);
+        if (m_grid.anyInside(pa, x, pb)) {
+            m_grid.insert(m_position[v]);
+            return false;
+        }
+        m_grid.insert(x);
         m_previous[v] = at(s);
         m_position[v] = x;
         m_spacing[v] = dv;
@@ -242,6 +241,7 @@ private:
     std::vector<int> m_next, m_before;
     int m_alive = 0;
     bool m_rewind = true;
+    VertexGrid& m_grid;
 };
 
 // Splits every edge longer than its spacing, recursively. False when `budget` vertices are reached.
@@ -262,14 +262,15 @@ bool splitPass(Ring& ring, int start, const ExactMotion& motion, std::size_t bud
 
 // Removes a vertex of every edge shorter than half its spacing: the straighter endpoint, so corners
 // and curl tips survive. Where removal would leave an edge longer than its spacing, the vertex is
-// recentred instead. Removes thin needle tips (isThinTip). Returns the (possibly new) start vertex.
+// recentred instead. Removes thin needle tips (isThinTip). Nothing is removed or moved where its
+// edges would sweep over a vertex of any contour. Returns the (possibly new) start vertex.
 int collapsePass(Ring& ring, int start, const ExactMotion& motion, bool& changed)
 {
     int v = start;
     for (int steps = ring.alive(); steps > 0 && ring.alive() > 3; --steps) {
         const int w = ring.next(v);
-        if (ring.thinTip(w)) {
-            // The new edge lies inside the needle, so it needs no fold check. v may be the next tip.
+        if (ring.thinTip(w) && !ring.removalSweepsInk(w)) {
+            // v may be the next tip.
             ring.unlink(w);
             if (w == start)
                 start = ring.next(v);
@@ -287,8 +288,7 @@ int collapsePass(Ring& ring, int start, const ExactMotion& motion, bool& changed
             continue;
         }
         const int a = ring.before(victim), b = ring.next(victim);
-        const bool removable = ring.length(a, b) <= ring.spacing(a, b) &&
-                               !ring.crossesNearby(ring.position(a), ring.position(b), a, b, victim, foldReach);
+        const bool removable = ring.length(a, b) <= ring.spacing(a, b) && !ring.removalSweepsInk(victim);
         if (removable) {
             ring.unlink(victim);
             if (victim == start)
@@ -412,6 +412,10 @@ bool ContourTracker::applyMotion(const ExactMotion& motion, const Flow& flow, do
 bool ContourTracker::refineAll(const ExactMotion& motion, const Flow& flow, double t)
 {
     computeSpacing(m_contours, flow, t, m_settings, m_grid, m_clock);
+    {
+        const PhaseClock::Scope timing(m_clock, Phase::Collapse);
+        m_vertexGrid.build(m_contours, m_settings.maxSpacing);
+    }
     bool withinBudget = true;
     std::size_t total = m_vertexCount;
     for (Contour& c : m_contours) {
@@ -447,7 +451,7 @@ bool ContourTracker::refine(Contour& contour, const ExactMotion& motion, std::si
     // and a split a short one, and a few rounds settle both. Should a contour still oscillate after
     // maxRounds, a last split pass keeps the upper bound, which topology depends on.
     constexpr int maxRounds = 16;
-    Ring ring(contour, m_settings.timeRewinding);
+    Ring ring(contour, m_settings.timeRewinding, m_vertexGrid);
     int start = 0;
     bool withinBudget = true;
     bool settled = false;

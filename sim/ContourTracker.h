@@ -9,6 +9,7 @@
 #include "sim/Separation.h"
 #include "sim/ProximityGrid.h"
 #include "sim/Tracking.h"
+#include "sim/VertexGrid.h"
 
 #include <functional>
 #include <optional>
@@ -87,6 +88,7 @@ private:
     std::vector<Contour> m_contours;
     std::size_t m_vertexCount = 0;
     ProximityGrid m_grid;
+    VertexGrid m_vertexGrid;
     PhaseClock* m_clock = nullptr;
 };
 
@@ -96,9 +98,6 @@ private:
 // place that leaves both needs met (the middle when it can), in [0, 1].
 double recentredFraction(double s, double toA, double toB, double needA, double needB);
 inline constexpr int recentreCorrections = 3;  // at most (the device's kernels are built with it)
-// How far along the contour (in edges, each way) a collapse or a recentring checks that it folds
-// the contour over nothing (the device's kernels are built with it too).
-inline constexpr int foldReach = 8;
 // A needle tip: a vertex where the contour turns back on itself (by 90° or more, or onto a
 // neighbour it coincides with), whose neighbours are no farther apart than their spacing allows,
 // and whose triangle with them is at most tipWidth times the vertex's spacing high over its

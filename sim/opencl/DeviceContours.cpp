@@ -243,7 +243,8 @@ struct DeviceContours::Impl {
         return back.motion;
     }
     cl::Buffer tileOffset;  // uint per vertex: offset within its tile, from the counting kernels
-    cl::Buffer work;        // uint per vertex: grid bucket counts, then starts; collapse actions
+    cl::Buffer work;        // uint per vertex: grid bucket counts, then starts
+    cl::Buffer actions;     // uint per vertex: what a collapse pass does with each vertex
     cl::Buffer tileTotals;  // one acc4 per tile: uint, acc_t or acc4 totals, as the pass needs
     cl::Buffer tileActive;  // uint per tile: refinement looks at its vertices (contours_refine.cl)
     // uint per tile: where the next pass looks, marked by a counting kernel (tileMarks, where
@@ -283,7 +284,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
     const std::string acc = fp64 ? "double" : "float";
     const std::string options =
         commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc + "2 -DVF_ACC4=" + acc + "4" +
-        " -DVF_RECENTRE_CORRECTIONS=" + std::to_string(recentreCorrections) + " -DVF_FOLD_REACH=" + std::to_string(foldReach) +
+        " -DVF_RECENTRE_CORRECTIONS=" + std::to_string(recentreCorrections) +
         " -DVF_TIP_WIDTH=" + std::to_string(tipWidth) + "f" + contourCodeDefinitions();
     const std::string source = joinedKernelSources({"flow.h.cl"}) + flowSource + "\n" +
                                joinedKernelSources({"workgroup.cl", "contours.cl", "contours_spacing.cl",
@@ -355,6 +356,7 @@ bool DeviceContours::Impl::reserve(std::size_t needed)
     back = vertexSet(paddedCapacity);
     tileOffset = buffer(paddedCapacity * sizeof(cl_uint));
     work = buffer(paddedCapacity * sizeof(cl_uint));
+    actions = buffer(paddedCapacity * sizeof(cl_uint));
     tileTotals = buffer((paddedCapacity / localSize + 1) * 4 * accSize);
     tileActive = buffer((paddedCapacity / localSize + 1) * sizeof(cl_uint));
     tileMarks = buffer((paddedCapacity / localSize + 1) * sizeof(cl_uint));
@@ -585,30 +587,34 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
 
 // The colour classes in `colours` (bit c for colour c) in turn, each a compaction of its deletions
 // (or, with none, recentring in place). Each decision pass also says which later colours still
-// touch short edges. Leaves in tileActive the tiles the next pass looks at.
+// touch short edges, and checks its removals against the proximity grid built again on the
+// positions it starts from (sweepsInk in contours_refine.cl). Leaves in tileActive the tiles the
+// next pass looks at.
 bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours)
 {
     bool changed = false;
+    const Grid g = grid();
     for (cl_uint colour = 0; colour < 3; ++colour) {
         if (!(colours & (flagShortEdge0 << colour)))
             continue;
+        buildGrid(g);
         clearPassFlags();
         clearMarks(tileMarks);
-        launch(queue, collapseDecide, laneGroups(vertices + 1), flow, motion, front.motion, front.spacing, front.contour,
-               contourOffset, contourCount, cl_uint(vertices), colour, tileActive, tileMarks, work, tileOffset,
-               tileTotals, cl_uint(tiles()), status);
+        launch(queue, collapseDecide, laneGroups(vertices + 1), flow, motion, g, work, motionScratch(), front.motion,
+               front.spacing, front.contour, contourOffset, contourCount, cl_uint(vertices), colour, tileActive,
+               tileMarks, actions, tileOffset, tileTotals, cl_uint(tiles()), status);
         countScan.exclusive(tileTotals, tiles() + 1);
         const Pass pass = readPass();
         if (pass.changed) {
             clearMarks(tileMarksMoved);
             launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing,
-                   front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, work, tileOffset,
+                   front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions, tileOffset,
                    tileTotals, motionScratch(), back.spacing, back.contour, tileMarksMoved);
             adopt(pass.total);
         } else {
             if (pass.flags & flagRecentred)
                 launch(queue, recentreInPlace, laneGroups(vertices), flow, motion, front.motion, front.spacing,
-                       front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, work);
+                       front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions);
             std::swap(tileActive, tileMarks);
         }
         changed = changed || pass.changed || (pass.flags & flagRecentred);
@@ -1047,10 +1053,11 @@ void DeviceContours::setPhaseClock(PhaseClock* clock)
 std::size_t DeviceContours::bytesPerVertex()
 {
     // Two vertex sets of float4 motion + float spacing + uint contour (24 bytes each), the tile
-    // offsets and the work array (4 bytes each): 56. Per tile of 64 vertices one acc4 of 32 bytes
-    // and a uint flag (0.56 per vertex), and the scans' block totals (under 0.05): rounded up, 57.
+    // offsets, the work array and the collapse actions (4 bytes each): 60. Per tile of 64 vertices
+    // one acc4 of 32 bytes and a uint flag (0.56 per vertex), and the scans' block totals (under
+    // 0.05): rounded up, 61.
     constexpr std::size_t perSet = sizeof(cl_float4) + sizeof(float) + sizeof(cl_uint);
-    return 2 * perSet + 2 * sizeof(cl_uint) + 1;
+    return 2 * perSet + 3 * sizeof(cl_uint) + 1;
 }
 
 } // namespace vf::sim::opencl

@@ -403,36 +403,63 @@ VF_INLINE float turning(float2 before, float2 at, float2 after)
     return fabs(atan2(cross2(e0, e1), dot(e0, e1)));
 }
 
-// ContourTracker's crossesNearby: whether segment p–q, a new edge between vertices endP and endQ
-// that replaces the edges at vertex v, would cross one of the contour's other edges within
-// VF_FOLD_REACH of v. In float: sides that round to zero count as crossing, so an unsure case
-// keeps the contour as it is.
-VF_INLINE bool crossesNearby(__global const float4 *motion, float2 p, float2 q, uint endP, uint endQ, uint v,
-                             uint first, uint count)
+// The reference's VertexGrid::anyInside on the proximity grid, built on the positions this colour's
+// pass starts from (DeviceContours::Impl::collapsePass): whether a vertex, other than those at a, b
+// and c and at `skip`, lies in the closed triangle a, b, c. Removals of one pass, each checked
+// against the same positions, cannot cross each other's new edges: two triangles that meet with
+// no corner of one inside the other have two pairs of crossing sides. In float a point counts as
+// outside only where one side's sign is sure against the other two's rounding, and a triangle over
+// more than VF_SWEEP_CELLS cells each way sweeps ink: an unsure case keeps the contour as it is.
+#define SWEEP_ARGS GRID_ARGS, __global const uint *bucketStart, __global const uint4 *entries
+#define SWEEP_PASS GRID_PASS, bucketStart, entries
+#define VF_SWEEP_CELLS 4
+
+// Twice the signed area of from, to, p, and in *slack a bound on its rounding.
+VF_INLINE float sideOf(float2 from, float2 to, float2 p, float *slack)
 {
-    for (int k = -VF_FOLD_REACH; k < VF_FOLD_REACH; ++k) {
-        const uint x = stepAlong(v, k, first, count), y = nextIn(x, first, count);
-        if (x == v || y == v || x == endP || y == endP || x == endQ || y == endQ)
-            continue;
-        // Boxes that do not meet (exact in float) rule out what the signs, near zero along a
-        // straight stretch, cannot.
-        const float2 c = motion[x].xy, d = motion[y].xy;
-        const bool boxesMeet = all(fmax(c, d) >= fmin(p, q)) && all(fmax(p, q) >= fmin(c, d));
-        if (boxesMeet && cross2(q - p, c - p) * cross2(q - p, d - p) <= 0.0f &&
-            cross2(d - c, p - c) * cross2(d - c, q - c) <= 0.0f)
-            return true;
-    }
+    const float2 e = to - from, d = p - from;
+    *slack = 8.0f * FLT_EPSILON * (fabs(e.x * d.y) + fabs(e.y * d.x));
+    return cross2(e, d);
+}
+
+VF_INLINE bool surelyOutside(float2 a, float2 b, float2 c, float2 p)
+{
+    float slackAB, slackBC, slackCA;
+    const float ab = sideOf(a, b, p, &slackAB), bc = sideOf(b, c, p, &slackBC), ca = sideOf(c, a, p, &slackCA);
+    const bool left = ab > slackAB || bc > slackBC || ca > slackCA;
+    const bool right = ab < -slackAB || bc < -slackBC || ca < -slackCA;
+    return left && right;
+}
+
+VF_INLINE bool sweepsInk(SWEEP_ARGS, float2 a, float2 b, float2 c, float2 skip)
+{
+    const float2 low = fmin(a, fmin(b, c)), high = fmax(a, fmax(b, c));
+    const int x0 = (int)floor(low.x / cellSize), x1 = (int)floor(high.x / cellSize);
+    const int y0 = (int)floor(low.y / cellSize), y1 = (int)floor(high.y / cellSize);
+    if (x1 - x0 >= VF_SWEEP_CELLS || y1 - y0 >= VF_SWEEP_CELLS)
+        return true;
+    const int columnMask = (1 << columnBits) - 1, rowMask = (1 << rowBits) - 1;
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const uint bucket = ((uint)(y & rowMask) << columnBits) + (uint)(x & columnMask);
+            for (uint k = bucketStart[bucket], end = bucketStart[bucket + 1]; k < end; ++k) {
+                const float2 p = (float2)(as_float(entries[k].x), as_float(entries[k].y));
+                if (any(p < low) || any(p > high) || all(p == a) || all(p == b) || all(p == c) || all(p == skip))
+                    continue;
+                if (!surelyOutside(a, b, c, p))
+                    return true;
+            }
+        }
     return false;
 }
 
-VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, __global const float4 *motion, __global const float *spacing,
-                              uint v, uint first, uint count)
+VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, SWEEP_ARGS, __global const float4 *motion,
+                              __global const float *spacing, uint v, uint first, uint count)
 {
     const uint a = previousIn(v, first, count), b = nextIn(v, first, count);
     const float2 pa = motion[a].xy, pv = motion[v].xy, pb = motion[b].xy;
     const float da = spacing[a], dv = spacing[v], db = spacing[b];
-    // The new edge of a needle tip lies inside the needle: no fold check.
-    if (isThinTip(pa, pv, pb, da, dv, db))
+    if (isThinTip(pa, pv, pb, da, dv, db) && !sweepsInk(SWEEP_PASS, pa, pv, pb, pv))
         return ACTION_DELETE;
     const bool shortBefore = distance(pa, pv) < shortLength(pv, 0.5f * (da + dv));
     const bool shortAfter = distance(pv, pb) < shortLength(pv, 0.5f * (dv + db));
@@ -450,21 +477,22 @@ VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, __global const float4 *m
     if (depictedExactly(MOTION_PASS) && (straysFrom(MOTION_PASS, pv, pa, pb) ||
                                           straysFrom(MOTION_PASS, motion[v].zw, motion[a].zw, motion[b].zw)))
         return ACTION_KEEP;
-    // Removed or recentred only where that folds the contour over none of its nearby edges.
-    if (distance(pa, pb) <= 0.5f * (da + db) && !crossesNearby(motion, pa, pb, a, b, v, first, count))
+    // Removed or recentred only where that sweeps over no ink: a recentring is a removal, then an
+    // insertion at x.
+    if (sweepsInk(SWEEP_PASS, pa, pv, pb, pv))
+        return ACTION_KEEP;
+    if (distance(pa, pb) <= 0.5f * (da + db))
         return ACTION_DELETE;
     // Recentred only where that lengthens both edges enough; else the short edge stays (a lower bound
     // topology does not need) rather than v being moved to the same place round after round.
     bool settles;
     const float2 x = recentred(FLOW_PASS, MOTION_PASS, motion[a], motion[b], da, db, &settles).xy;
-    return settles && !crossesNearby(motion, pa, x, a, v, v, first, count) &&
-                   !crossesNearby(motion, x, pb, v, b, v, first, count)
-               ? ACTION_RECENTRE
-               : ACTION_KEEP;
+    return settles && !sweepsInk(SWEEP_PASS, pa, x, pb, pv) ? ACTION_RECENTRE : ACTION_KEEP;
 }
 
-VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *motion, __global const float *spacing,
-                              CONTOUR_ARGS, uint n, uint colour, TILE_ARGS, __global uint *marks,
+VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, SWEEP_ARGS, __global const float4 *motion,
+                              __global const float *spacing, CONTOUR_ARGS, uint n, uint colour, TILE_ARGS,
+                              __global uint *marks,
                               __global uint *action, __global uint *tileOffset, __global uint *tileTotals, uint tiles,
                               __global uint *status)
 {
@@ -480,9 +508,10 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, __global const float4 *mot
         uint act = ACTION_KEEP;
         const uint c = contourOf[i], from = contourOffset[c], count = contourCount[c], k = i - from;
         if (count > 3 && collapseColour(k, count) == colour) {
-            act = collapseAction(FLOW_PASS, MOTION_PASS, motion, spacing, i, from, count);
+            act = collapseAction(FLOW_PASS, MOTION_PASS, SWEEP_PASS, motion, spacing, i, from, count);
             if (count == 4 && k >= 2 && act == ACTION_DELETE &&
-                collapseAction(FLOW_PASS, MOTION_PASS, motion, spacing, i - 2, from, count) == ACTION_DELETE)
+                collapseAction(FLOW_PASS, MOTION_PASS, SWEEP_PASS, motion, spacing, i - 2, from, count) ==
+                    ACTION_DELETE)
                 act = ACTION_KEEP;
         }
         const uint j = nextIn(i, from, count);

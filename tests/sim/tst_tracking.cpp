@@ -102,6 +102,9 @@ private slots:
 
     void thinNeedlesAreTrimmed_data();
     void thinNeedlesAreTrimmed();
+
+    void collapseSweepsOverNoInk_data() { test::addBackendRows(); }
+    void collapseSweepsOverNoInk();
 };
 
 void TestTracking::rungeKuttaIsFourthOrder()
@@ -379,6 +382,24 @@ void TestTracking::thinNeedlesAreTrimmed()
     else
         QVERIFY2(top > 0.75 - spacing, qPrintable(QStringLiteral("the needle was cut to %1").arg(top)));
     QVERIFY(std::abs(sim::signedArea(contour) - 0.09) < 0.15 * width + 0.09 * test::positionEpsilon(backend));
+}
+
+// A vertex 1e-5 proud of a straight edge, 1e-4 from a corner: its edge to the corner is short, and
+// it is the straighter end, so collapse would remove it, and the joining chord would pass under the
+// tip of another ink that pokes up beneath it. It must stay.
+void TestTracking::collapseSweepsOverNoInk()
+{
+    QFETCH(QString, backend);
+    VF_REQUIRE_BACKEND(backend);
+    constexpr double spacing = 1e-3;
+    auto simulation = test::makeBackend(backend, test::analyticSettings("0", "0", spacing, false));
+    const Vec2 bump(0.5, 0.5 + 1e-5), corner(0.5 + 1e-4, 0.5);
+    simulation->addRegion({Polygon{{0.3, 0.5}, {0.5 - 4e-4, 0.5}, bump, corner, {corner.x, 0.7}, {0.3, 0.7}}});
+    simulation->addRegion({Polygon{{0.45, 0.3}, {0.55, 0.3}, {0.5, 0.5 + 5e-6}}});
+    QCOMPARE(test::crossings(test::outlines(*simulation)), std::size_t(0));
+    for (int step = 0; step < 3; ++step)
+        simulation->step(0.01);
+    QCOMPARE(test::crossings(test::outlines(*simulation)), std::size_t(0));
 }
 
 QTEST_APPLESS_MAIN(TestTracking)
