@@ -173,6 +173,7 @@ struct DeviceContours::Impl {
     void reserveContours(std::size_t needed);
     std::size_t tiles() const { return roundUpToLocal(vertices + 1) / localSize; }
     Grid grid() const;
+    Grid sweepGrid() const;
     Motion flowMotion() const { return Motion{motionFlow, {}, {}, {}, cl_int(settings.timeRewinding)}; }
     Motion mapMotion(cl_int kind, cl_float4 a, cl_float4 b, cl_float4 c = {}) const
     {
@@ -183,6 +184,7 @@ struct DeviceContours::Impl {
     void computeSpacing(const FlowBinding& flow);
     void findNearestOtherParts(const Grid& grid);
     void buildGrid(const Grid& grid);
+    void buildSweepGrid(const Grid& grid);
     bool refine(const FlowBinding& flow, const Motion& motion);
     struct Pass {
         bool withinBudget = true;
@@ -225,7 +227,8 @@ struct DeviceContours::Impl {
     const std::size_t accSize;
     const std::optional<std::size_t> vertexCap;  // VF_OPENCL_MAX_VERTICES
     Scan countScan, sumScan;
-    cl::Kernel advect, strain, positionsOf, gatherVertices, arcTilesAndCount, gridScatter, nearestOtherPart,
+    cl::Kernel advect, strain, positionsOf, gatherVertices, arcTilesAndCount, gridScatter, sweepCount, sweepScatter,
+        nearestOtherPart,
         nearestBeyond, rawSpacing, smoothSpacing, splitCount, splitScatter, recountContours, collapseDecide,
         collapseScatter, recentreInPlace, contourTermTiles, contourTermSums, correctArea;
 
@@ -296,6 +299,8 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
                                 {&gatherVertices, "gatherVertices"},
                                 {&arcTilesAndCount, "arcTilesAndCount"},
                                 {&gridScatter, "gridScatter"},
+                                {&sweepCount, "sweepCount"},
+                                {&sweepScatter, "sweepScatter"},
                                 {&nearestOtherPart, "nearestOtherPart"},
                                 {&nearestBeyond, "nearestBeyond"},
                                 {&rawSpacing, "rawSpacing"},
@@ -396,6 +401,18 @@ Grid DeviceContours::Impl::grid() const
     return {cl_float(cell), (bits + 1) / 2, bits / 2};
 }
 
+// The proximity grid's cells, on no more buckets than the canvas has cells: the collapse builds it
+// several times a step, and the rest of the torus would hold little but empty buckets to scan.
+Grid DeviceContours::Impl::sweepGrid() const
+{
+    const Grid proximity = grid();
+    const auto bitsAcross = [&](double extent) {
+        return cl_uint(std::bit_width(std::size_t(std::ceil(extent / proximity.cellSize)) - 1));
+    };
+    return {proximity.cellSize, std::min(proximity.columnBits, bitsAcross(canvas.x)),
+            std::min(proximity.rowBits, bitsAcross(canvas.y))};
+}
+
 bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, bool startKnown)
 {
     startKnown = startKnown && strainSamplesKept && motion.kind == motionFlow;
@@ -473,6 +490,16 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
     // scattered slots.
     const auto radius = cl_float(settings.proximityRadius());
     queue.enqueueFillBuffer(back.contour, radius * radius, 0, vertices * sizeof(cl_float));
+}
+
+// Every vertex's position in its bucket of g, in motionScratch(); the buckets' starts in `work`.
+void DeviceContours::Impl::buildSweepGrid(const Grid& g)
+{
+    const auto n = cl_uint(vertices);
+    queue.enqueueFillBuffer(work, cl_uint(0), 0, (g.buckets() + 1) * sizeof(cl_uint));
+    launch(queue, sweepCount, laneGroups(vertices), front.motion, n, g, work, tileOffset);
+    countScan.exclusive(work, g.buckets() + 1);
+    launch(queue, sweepScatter, laneGroups(vertices), front.motion, n, g, work, tileOffset, motionScratch());
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,
@@ -593,11 +620,13 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
 bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours)
 {
     bool changed = false;
-    const Grid g = grid();
+    const Grid g = sweepGrid();
+    bool gridCurrent = false;  // a pass that changes nothing leaves the sweep grid as it found it
     for (cl_uint colour = 0; colour < 3; ++colour) {
         if (!(colours & (flagShortEdge0 << colour)))
             continue;
-        buildGrid(g);
+        if (!gridCurrent)
+            buildSweepGrid(g);
         clearPassFlags();
         clearMarks(tileMarks);
         launch(queue, collapseDecide, laneGroups(vertices + 1), flow, motion, g, work, motionScratch(), front.motion,
@@ -617,7 +646,8 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
                        front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions);
             std::swap(tileActive, tileMarks);
         }
-        changed = changed || pass.changed || (pass.flags & flagRecentred);
+        gridCurrent = !pass.changed && !(pass.flags & flagRecentred);
+        changed = changed || !gridCurrent;
         colours = pass.flags & flagsShortEdge;
     }
     return changed;

@@ -410,9 +410,42 @@ VF_INLINE float turning(float2 before, float2 at, float2 after)
 // no corner of one inside the other have two pairs of crossing sides. In float a point counts as
 // outside only where one side's sign is sure against the other two's rounding, and a triangle over
 // more than VF_SWEEP_CELLS cells each way sweeps ink: an unsure case keeps the contour as it is.
-#define SWEEP_ARGS GRID_ARGS, __global const uint *bucketStart, __global const uint4 *entries
+#define SWEEP_ARGS GRID_ARGS, __global const uint *bucketStart, __global const float2 *entries
 #define SWEEP_PASS GRID_PASS, bucketStart, entries
 #define VF_SWEEP_CELLS 4
+
+// The sweep grid, by counting sort as the proximity grid's, of positions only: sweepCount counts
+// each vertex into its bucket, and after the scan of the counts sweepScatter puts its position at
+// its place there.
+VF_KERNEL void sweepCount(__global const float4 *motion, uint n, GRID_ARGS, __global uint *bucketCounts,
+                          __global uint *rank)
+{
+    const uint g = get_global_id(0), first = VF_LANES * g;
+    if (first >= n)
+        return;
+    floatv x, y;
+    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
+    int bucket[VF_LANES];
+    bucketLanes(GRID_PASS, x, y, bucket);
+    countIntoBuckets(bucket, first, (int)min((uint)VF_LANES, n - first), bucketCounts, rank);
+}
+
+VF_KERNEL void sweepScatter(__global const float4 *motion, uint n, GRID_ARGS, __global const uint *bucketStart,
+                            __global const uint *rank, __global float2 *entries)
+{
+    const uint g = get_global_id(0), first = VF_LANES * g;
+    if (first >= n)
+        return;
+    floatv x, y;
+    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
+    int bucket[VF_LANES];
+    bucketLanes(GRID_PASS, x, y, bucket);
+    float xs[VF_LANES], ys[VF_LANES];
+    VF_VSTORE(x, 0, xs);
+    VF_VSTORE(y, 0, ys);
+    for (int k = 0; k < VF_LANES && first + k < n; ++k)
+        entries[bucketStart[bucket[k]] + rank[first + k]] = (float2)(xs[k], ys[k]);
+}
 
 // Twice the signed area of from, to, p, and in *slack a bound on its rounding.
 VF_INLINE float sideOf(float2 from, float2 to, float2 p, float *slack)
@@ -443,7 +476,7 @@ VF_INLINE bool sweepsInk(SWEEP_ARGS, float2 a, float2 b, float2 c, float2 skip)
         for (int x = x0; x <= x1; ++x) {
             const uint bucket = ((uint)(y & rowMask) << columnBits) + (uint)(x & columnMask);
             for (uint k = bucketStart[bucket], end = bucketStart[bucket + 1]; k < end; ++k) {
-                const float2 p = (float2)(as_float(entries[k].x), as_float(entries[k].y));
+                const float2 p = entries[k];
                 if (any(p < low) || any(p > high) || all(p == a) || all(p == b) || all(p == c) || all(p == skip))
                     continue;
                 if (!surelyOutside(a, b, c, p))

@@ -31,14 +31,31 @@ VF_INLINE void bucketLanes(GRID_ARGS, floatv x, floatv y, int *buckets)
               0, buckets);
 }
 
+// Each of the lanes' vertices (from `first`, `lanes` of them) counted into its bucket, and its rank
+// there left in `rank`: one atomic per run of lanes in one bucket (neighbours along a contour
+// mostly share a cell). The counts do not depend on the order in which work-items arrive, the
+// ranks do (see gridScatter).
+VF_INLINE void countIntoBuckets(const int *bucket, uint first, int lanes, __global uint *bucketCounts,
+                                __global uint *rank)
+{
+    for (int k = 0; k < lanes;) {
+        int end = k + 1;
+        while (end < lanes && bucket[end] == bucket[k])
+            ++end;
+        const uint base = atomic_add(&bucketCounts[bucket[k]], (uint)(end - k));
+        for (int m = k; m < end; ++m)
+            rank[first + m] = base + (uint)(m - k);
+        k = end;
+    }
+}
+
 // Arc lengths are summed in tiles of VF_ARC_TILE vertices: a work-group of lane work-items.
 #define VF_ARC_TILE (VF_LOCAL * VF_LANES)
 
 // Edge lengths to the next vertex, summed within each arc tile (exclusive), and each tile's total
-// for the scan; also the grid's per-bucket counts and each vertex's rank in its bucket. Launched
-// over one work-item per VF_LANES of the n + 1 vertices, so that the prefix at n exists; lengths
-// and cells are computed in lanes. Counts and ranks come from atomics: the counts do not depend on
-// the order in which work-items arrive, the ranks do (see gridScatter).
+// for the scan; also the grid's per-bucket counts and each vertex's rank in its bucket
+// (countIntoBuckets). Launched over one work-item per VF_LANES of the n + 1 vertices, so that the
+// prefix at n exists; lengths and cells are computed in lanes.
 VF_KERNEL void arcTilesAndCount(__global const float4 *motion, CONTOUR_ARGS, uint n, GRID_ARGS,
                                 __global float *tileArc, __global acc_t *tileTotals, uint tiles,
                                 __global uint *bucketCounts, __global uint *rank)
@@ -59,17 +76,7 @@ VF_KERNEL void arcTilesAndCount(__global const float4 *motion, CONTOUR_ARGS, uin
         lanesOf((__global const float *)motion, 4, g, n, &x, &y);
         int bucket[VF_LANES];
         bucketLanes(GRID_PASS, x, y, bucket);
-        // One atomic per run of lanes in one bucket (neighbours along a contour mostly share a cell).
-        const int lanes = (int)min((uint)VF_LANES, n - first);
-        for (int k = 0; k < lanes;) {
-            int end = k + 1;
-            while (end < lanes && bucket[end] == bucket[k])
-                ++end;
-            const uint base = atomic_add(&bucketCounts[bucket[k]], (uint)(end - k));
-            for (int m = k; m < end; ++m)
-                rank[first + m] = base + (uint)(m - k);
-            k = end;
-        }
+        countIntoBuckets(bucket, first, (int)min((uint)VF_LANES, n - first), bucketCounts, rank);
         for (int k = 0; k < VF_LANES; ++k)
             lengths[k] = first + k < n ? lengths[k] : 0.0f;
     }
