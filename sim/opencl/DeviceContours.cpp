@@ -227,7 +227,7 @@ struct DeviceContours::Impl {
     const std::size_t accSize;
     const std::optional<std::size_t> vertexCap;  // VF_OPENCL_MAX_VERTICES
     Scan countScan, sumScan;
-    cl::Kernel advect, strain, positionsOf, gatherVertices, arcTilesAndCount, gridScatter, sweepCount, sweepScatter,
+    cl::Kernel advect, strain, positionsOf, gatherVertices, arcTilesAndCount, gridScatter, sweepGridPass,
         nearestOtherPart,
         nearestBeyond, rawSpacing, smoothSpacing, splitCount, splitScatter, recountContours, collapseDecide,
         collapseScatter, recentreInPlace, contourTermTiles, contourTermSums, correctArea;
@@ -299,8 +299,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
                                 {&gatherVertices, "gatherVertices"},
                                 {&arcTilesAndCount, "arcTilesAndCount"},
                                 {&gridScatter, "gridScatter"},
-                                {&sweepCount, "sweepCount"},
-                                {&sweepScatter, "sweepScatter"},
+                                {&sweepGridPass, "sweepGridPass"},
                                 {&nearestOtherPart, "nearestOtherPart"},
                                 {&nearestBeyond, "nearestBeyond"},
                                 {&rawSpacing, "rawSpacing"},
@@ -497,9 +496,11 @@ void DeviceContours::Impl::buildSweepGrid(const Grid& g)
 {
     const auto n = cl_uint(vertices);
     queue.enqueueFillBuffer(work, cl_uint(0), 0, (g.buckets() + 1) * sizeof(cl_uint));
-    launch(queue, sweepCount, laneGroups(vertices), front.motion, n, g, work, tileOffset);
+    launch(queue, sweepGridPass, laneGroups(vertices), front.motion, n, g, cl_int(0), work, tileOffset,
+           motionScratch());
     countScan.exclusive(work, g.buckets() + 1);
-    launch(queue, sweepScatter, laneGroups(vertices), front.motion, n, g, work, tileOffset, motionScratch());
+    launch(queue, sweepGridPass, laneGroups(vertices), front.motion, n, g, cl_int(1), work, tileOffset,
+           motionScratch());
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,

@@ -414,37 +414,24 @@ VF_INLINE float turning(float2 before, float2 at, float2 after)
 #define SWEEP_PASS GRID_PASS, bucketStart, entries
 #define VF_SWEEP_CELLS 4
 
-// The sweep grid, by counting sort as the proximity grid's, of positions only: sweepCount counts
-// each vertex into its bucket, and after the scan of the counts sweepScatter puts its position at
-// its place there.
-VF_KERNEL void sweepCount(__global const float4 *motion, uint n, GRID_ARGS, __global uint *bucketCounts,
-                          __global uint *rank)
+// The sweep grid, by counting sort as the proximity grid's, of positions only: launched once to
+// count each vertex into its bucket (`scatter` 0), and after the scan of the counts once more to
+// put its position at its place there (`scatter` 1).
+VF_KERNEL void sweepGridPass(__global const float4 *motion, uint n, GRID_ARGS, int scatter,
+                             __global uint *bucketCountsThenStarts, __global uint *rank, __global float2 *entries)
 {
     const uint g = get_global_id(0), first = VF_LANES * g;
     if (first >= n)
         return;
-    floatv x, y;
-    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
-    int bucket[VF_LANES];
-    bucketLanes(GRID_PASS, x, y, bucket);
-    countIntoBuckets(bucket, first, (int)min((uint)VF_LANES, n - first), bucketCounts, rank);
-}
-
-VF_KERNEL void sweepScatter(__global const float4 *motion, uint n, GRID_ARGS, __global const uint *bucketStart,
-                            __global const uint *rank, __global float2 *entries)
-{
-    const uint g = get_global_id(0), first = VF_LANES * g;
-    if (first >= n)
-        return;
-    floatv x, y;
-    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
-    int bucket[VF_LANES];
-    bucketLanes(GRID_PASS, x, y, bucket);
     float xs[VF_LANES], ys[VF_LANES];
-    VF_VSTORE(x, 0, xs);
-    VF_VSTORE(y, 0, ys);
+    int bucket[VF_LANES];
+    lanePositionsAndBuckets(motion, g, n, GRID_PASS, xs, ys, bucket);
+    if (!scatter) {
+        countIntoBuckets(bucket, first, (int)min((uint)VF_LANES, n - first), bucketCountsThenStarts, rank);
+        return;
+    }
     for (int k = 0; k < VF_LANES && first + k < n; ++k)
-        entries[bucketStart[bucket[k]] + rank[first + k]] = (float2)(xs[k], ys[k]);
+        entries[bucketCountsThenStarts[bucket[k]] + rank[first + k]] = (float2)(xs[k], ys[k]);
 }
 
 // Twice the signed area of from, to, p, and in *slack a bound on its rounding.

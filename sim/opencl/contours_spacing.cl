@@ -31,6 +31,17 @@ VF_INLINE void bucketLanes(GRID_ARGS, floatv x, floatv y, int *buckets)
               0, buckets);
 }
 
+// The positions of work-item g's lanes (its VF_LANES vertices from VF_LANES·g) and their buckets.
+VF_INLINE void lanePositionsAndBuckets(__global const float4 *motion, uint g, uint n, GRID_ARGS, float *xs, float *ys,
+                                       int *bucket)
+{
+    floatv x, y;
+    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
+    bucketLanes(GRID_PASS, x, y, bucket);
+    VF_VSTORE(x, 0, xs);
+    VF_VSTORE(y, 0, ys);
+}
+
 // Each of the lanes' vertices (from `first`, `lanes` of them) counted into its bucket, and its rank
 // there left in `rank`: one atomic per run of lanes in one bucket (neighbours along a contour
 // mostly share a cell). The counts do not depend on the order in which work-items arrive, the
@@ -114,13 +125,9 @@ VF_KERNEL void gridScatter(__global const float4 *motion, CONTOUR_ARGS, uint n, 
     const uint g = get_global_id(0);
     if (VF_LANES * g >= n)
         return;
-    floatv x, y;
-    lanesOf((__global const float *)motion, 4, g, n, &x, &y);
-    int bucket[VF_LANES];
-    bucketLanes(GRID_PASS, x, y, bucket);
     float xs[VF_LANES], ys[VF_LANES];
-    VF_VSTORE(x, 0, xs);
-    VF_VSTORE(y, 0, ys);
+    int bucket[VF_LANES];
+    lanePositionsAndBuckets(motion, g, n, GRID_PASS, xs, ys, bucket);
     for (int k = 0; k < VF_LANES && VF_LANES * g + k < n; ++k) {
         const uint i = VF_LANES * g + k, c = contourOf[i], first = contourOffset[c];
         const acc_t start = arcBefore(tileArc, tilePrefix, first);
