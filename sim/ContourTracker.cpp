@@ -71,7 +71,6 @@ public:
     int next(int v) const { return m_next[v]; }
     int before(int v) const { return m_before[v]; }
 
-    Vec2 position(int v) const { return m_position[v]; }
     bool thinTip(int v) const
     {
         const int a = m_before[v], b = m_next[v];

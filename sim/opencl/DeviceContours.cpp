@@ -1,8 +1,8 @@
 // The contour tracker of sim/ContourTracker.cpp on an OpenCL device: the host side of one step
-// (advect, spacing, proximity grid, refinement by stream compaction, area correction, the cuts of
-// contour surgery, the widening of layers) and the transfers in and out. One file because every
-// phase works on the same device buffers, held in Impl, and its launches must agree with them;
-// the kernels are in contours*.cl, split by phase.
+// (advect, spacing, proximity grid, refinement by stream compaction with the collapse's sweep grid,
+// area correction, the cuts of contour surgery, the widening of layers) and the transfers in and
+// out. One file because every phase works on the same device buffers, held in Impl, and its
+// launches must agree with them; the kernels are in contours*.cl, split by phase.
 // The seam for a split is the read-back half (snapshots, outlines, staging, requests, from
 // enqueueSnapshot on): it only reads the vertex buffers (through the motion scratch), and would
 // move out with Impl's declaration in a private header shared by both files; contour surgery
@@ -228,9 +228,8 @@ struct DeviceContours::Impl {
     const std::optional<std::size_t> vertexCap;  // VF_OPENCL_MAX_VERTICES
     Scan countScan, sumScan;
     cl::Kernel advect, strain, positionsOf, gatherVertices, arcTilesAndCount, gridScatter, sweepGridPass,
-        nearestOtherPart,
-        nearestBeyond, rawSpacing, smoothSpacing, splitCount, splitScatter, recountContours, collapseDecide,
-        collapseScatter, recentreInPlace, contourTermTiles, contourTermSums, correctArea;
+        nearestOtherPart, nearestBeyond, rawSpacing, smoothSpacing, splitCount, splitScatter, recountContours,
+        collapseDecide, collapseScatter, recentreInPlace, contourTermTiles, contourTermSums, correctArea;
 
     // Vertices: two sets (compaction scatters from one into the other, then they swap) and scratch.
     std::size_t capacity = 0, vertices = 0;
@@ -615,8 +614,8 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
 
 // The colour classes in `colours` (bit c for colour c) in turn, each a compaction of its deletions
 // (or, with none, recentring in place). Each decision pass also says which later colours still
-// touch short edges, and checks its removals against the proximity grid built again on the
-// positions it starts from (sweepsInk in contours_refine.cl). Leaves in tileActive the tiles the
+// touch short edges, and checks its removals against the sweep grid (sweepGrid()) built again on
+// the positions it starts from (sweepsInk in contours_refine.cl). Leaves in tileActive the tiles the
 // next pass looks at.
 bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours)
 {

@@ -1,9 +1,9 @@
 // Refinement (paper §3.1, §3.3) by stream compaction; the split and collapse passes share their
-// tile bookkeeping and vertex helpers, so they stay in one file (about 570 lines). Each pass
-// decides, for every vertex at once, how many vertices it becomes (a split edge: 1 + the vertices
-// inserted after it; a collapse: 0 or 1), scans those counts and scatters the store into the other
-// buffer, so every contour stays contiguous and in order with no per-contour serial work and
-// perfect balance.
+// tile bookkeeping and vertex helpers, so they stay in one file (about 620 lines, with the
+// collapse's sweep grid). Each pass decides, for every vertex at once, how many vertices it
+// becomes (a split edge: 1 + the vertices inserted after it; a collapse: 0 or 1), scans those
+// counts and scatters the store into the other buffer, so every contour stays contiguous and in
+// order with no per-contour serial work and perfect balance.
 // The counting kernels fuse the first level of the scan: they leave each vertex's offset within
 // its tile of VF_LOCAL vertices and each tile's total, which Scan turns into tile bases.
 //
@@ -403,8 +403,8 @@ VF_INLINE float turning(float2 before, float2 at, float2 after)
     return fabs(atan2(cross2(e0, e1), dot(e0, e1)));
 }
 
-// The reference's VertexGrid::anyInside on the proximity grid, built on the positions this colour's
-// pass starts from (DeviceContours::Impl::collapsePass): whether a vertex, other than those at a, b
+// The reference's VertexGrid::anyInside on the sweep grid (sweepGridPass), built on the positions
+// this colour's pass starts from (DeviceContours::Impl::collapsePass): whether a vertex, other than those at a, b
 // and c and at `skip`, lies in the closed triangle a, b, c. Removals of one pass, each checked
 // against the same positions, cannot cross each other's new edges: two triangles that meet with
 // no corner of one inside the other have two pairs of crossing sides. In float a point counts as
