@@ -119,6 +119,8 @@ GatherDialog::GatherDialog(const model::Canvas& canvas, std::vector<RegionOutlin
     m_duration->setToolTip(tr("Seconds of simulated time the fluid is driven"));
     m_strength = numberBox(m_choice.drive.strength, 0.0, 100000.0, {}, "gatherStrength");
     m_strength->setToolTip(tr("How hard the ink is drawn in (a spring constant, 1/s²)"));
+    m_gathering = numberBox(m_choice.drive.gathering, 0.0, 1000.0, {}, "gatherGathering");
+    m_gathering->setToolTip(tr("How hard the ink is drawn into the target's core, pushing water out (canvas units/s²)"));
     m_preview = new QLabel;
     m_preview->setObjectName(QStringLiteral("gatherPreview"));
     m_preview->setFrameShape(QFrame::Box);
@@ -135,6 +137,7 @@ GatherDialog::GatherDialog(const model::Canvas& canvas, std::vector<RegionOutlin
     m_form->addRow(tr("File:"), m_fileRow);
     m_form->addRow(tr("Duration:"), m_duration);
     m_form->addRow(tr("Strength:"), m_strength);
+    m_form->addRow(tr("Gathering:"), m_gathering);
     m_form->addRow(tr("Preview:"), m_preview);
     m_form->addRow(m_summary);
     m_form->addRow(m_buttons);
@@ -147,6 +150,7 @@ GatherDialog::GatherDialog(const model::Canvas& canvas, std::vector<RegionOutlin
     connect(browseButton, &QPushButton::clicked, this, &GatherDialog::browse);
     connect(m_duration, &QDoubleSpinBox::valueChanged, this, &GatherDialog::update);
     connect(m_strength, &QDoubleSpinBox::valueChanged, this, &GatherDialog::update);
+    connect(m_gathering, &QDoubleSpinBox::valueChanged, this, &GatherDialog::update);
     connect(m_buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     update();
@@ -200,6 +204,7 @@ void GatherDialog::update()
     m_form->setRowVisible(m_fileRow, file);
     m_choice.duration = m_duration->value();
     m_choice.drive.strength = m_strength->value();
+    m_choice.drive.gathering = m_gathering->value();
     const QString problem = outlineTarget();
     m_summary->setText(problem.isEmpty()
                            ? tr("The fluid draws the ink into %1 for %2 s, then flows on freely. One step of the history.")

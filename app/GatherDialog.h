@@ -62,7 +62,7 @@ private:
     QCheckBox* m_bold;
     QLineEdit* m_file;
     QHBoxLayout* m_fileRow;
-    QDoubleSpinBox *m_duration, *m_strength;
+    QDoubleSpinBox *m_duration, *m_strength, *m_gathering;
     QLabel *m_preview, *m_summary;
     QDialogButtonBox* m_buttons;
 };

@@ -410,6 +410,7 @@ const Key<GatherStroke> gatherKeys[] = {
     {u"target"_s, true, readTarget},
     {u"strength"_s, false, [](const Field& f, GatherStroke& g) { g.drive.strength = f.nonNegative(); }},
     {u"attenuation"_s, false, [](const Field& f, GatherStroke& g) { g.drive.attenuation = f.nonNegative(); }},
+    {u"gathering"_s, false, [](const Field& f, GatherStroke& g) { g.drive.gathering = f.nonNegative(); }},
     {u"blur"_s, false, [](const Field& f, GatherStroke& g) { g.drive.blur = length(f); }},
 };
 

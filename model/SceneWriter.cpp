@@ -206,7 +206,7 @@ QJsonObject toJson(const GatherStroke& g)
     return {{u"tool"_s, u"gather"_s},          {u"time"_s, g.time},
             {u"duration"_s, g.duration},       {u"target"_s, target},
             {u"strength"_s, g.drive.strength}, {u"attenuation"_s, g.drive.attenuation},
-            {u"blur"_s, g.drive.blur}};
+            {u"gathering"_s, g.drive.gathering}, {u"blur"_s, g.drive.blur}};
 }
 
 template <typename... Ts>

@@ -22,8 +22,8 @@ constexpr double kTargetFloor = 1e-4;
 void validateDriveSettings(const TargetDriveSettings& s)
 {
     const auto good = [](double x) { return std::isfinite(x) && x >= 0.0; };
-    if (!good(s.strength) || !good(s.attenuation))
-        throw std::invalid_argument("target drive: strength and attenuation must be zero or positive");
+    if (!good(s.strength) || !good(s.attenuation) || !good(s.gathering))
+        throw std::invalid_argument("target drive: strength, attenuation and gathering must be zero or positive");
     if (!(s.blur > 0.0) || !std::isfinite(s.blur))
         throw std::invalid_argument("target drive: blur must be positive");
 }
@@ -52,6 +52,7 @@ TargetDrive::TargetDrive(const std::vector<std::vector<Polygon>>& target, const 
         throw std::invalid_argument("target drive: the target covers none of the canvas");
     for (double& x : m_blurredTarget)
         x = std::max(x, kTargetFloor * peak);
+    m_depth = signedDepth(covered, m_cells);
 }
 
 BodyForce TargetDrive::force(const std::vector<std::vector<Polygon>>& ink) const
@@ -61,11 +62,12 @@ BodyForce TargetDrive::force(const std::vector<std::vector<Polygon>>& ink) const
     const double hx = m_cells.width / nx, hy = m_cells.height / ny;
     const double gain = m_settings.strength * m_settings.blur * m_settings.blur;  // v_f σ²
     BodyForce f{FluidSolver::atRest({nx, ny, m_cells.width, m_cells.height}), m_settings.attenuation};
-    // Between cells a and b, h apart along the face's normal: v_f σ² ρ̃ ∇P / ρ̃*, each averaged
-    // onto the face. Wall faces stay zero.
+    // Between cells a and b, h apart along the face's normal: ρ̃ (v_f σ² ∇P / ρ̃* + v_g ∇Φ), each
+    // averaged onto the face. Wall faces stay zero.
     const auto between = [&](std::size_t a, std::size_t b, double h) {
         const double t = 0.5 * (m_blurredTarget[a] + m_blurredTarget[b]);
-        return gain * 0.5 * (density[a] + density[b]) * (m_pull[b] - m_pull[a]) / (h * t);
+        const double drive = gain * (m_pull[b] - m_pull[a]) / t, gathering = m_settings.gathering * (m_depth[b] - m_depth[a]);
+        return 0.5 * (density[a] + density[b]) * (drive + gathering) / h;
     };
     for (int j = 0; j < ny; ++j)
         for (int i = 1; i < nx; ++i)

@@ -3,7 +3,7 @@
 // a force that guides the ink into a target shape. The target is rasterised on the fluid grid and
 // blurred once; before each step the ink is rasterised and blurred the same way, and the fluid
 // gains the driving force
-//     F = v_f · σ² · ρ̃ ∇ρ̃* / ρ̃*
+//     F = v_f · σ² · ρ̃ ∇ρ̃* / ρ̃*  (+ the gathering term below)
 // (ρ̃ the blurred ink, ρ̃* the blurred target) and loses velocity at the rate v_d (the paper's
 // attenuation, −v_d u), before the usual projection. The σ² makes v_f a spring constant: in the
 // tail of a Gaussian blob σ² ∇ρ̃* / ρ̃* is the way to the blob's centre, so ink there accelerates
@@ -17,10 +17,17 @@
 // the narrowest (the weights favour it), which follows the shape's detail. So ink anywhere on the
 // canvas is drawn in, and near the shape it is drawn into the shape itself.
 //
-// Fattal and Lischinski's gathering term, which pulls smoke density into the target's interior, is
-// left out, as the paper does: vector ink does not diffuse, so there is no spread density to
-// gather back.
-#include "sim/Coverage.h"
+// Fattal and Lischinski's gathering term moves smoke density into the target's interior. The paper
+// leaves it out (vector ink does not diffuse), and the driving force alone leaves water inside the
+// target: where the blurred target is flat (inside a bold letter) it pushes nothing, so water
+// caught between the ink as it arrives stays, and ink far from every blur's reach stays out. So a
+// gathering term of another kind is added: the ink is lighter than the water in the potential
+//     Φ = the target's signed depth (distance to its outline, positive inside, negative outside),
+// which adds v_g · ρ̃ ∇Φ. Like buoyancy it moves nothing where the ink is everywhere or nowhere
+// (there it is a gradient, or zero, which the projection removes); where an edge between ink and
+// water crosses Φ's level lines it turns them over, ink towards the target's core and water out,
+// until the ink fills the deepest part of the target, its own area's worth.
+#include "sim/DistanceField.h"
 #include "sim/FluidSolver.h"
 
 #include <vector>
@@ -29,8 +36,9 @@ namespace vf::sim {
 
 struct TargetDriveSettings {
     double strength = 400.0;  // v_f, 1/s²
-    double attenuation = 3.0; // v_d, 1/s
+    double attenuation = 10.0; // v_d, 1/s
     double blur = 0.01;       // σ, canvas units
+    double gathering = 5.0;   // v_g, canvas units/s²: the gathering term's pull (see the top)
 
     friend bool operator==(const TargetDriveSettings&, const TargetDriveSettings&) = default;
 };
@@ -56,6 +64,7 @@ private:
     CellLattice m_cells;
     std::vector<double> m_blurredTarget;  // ρ̃* on the cells, floored
     std::vector<double> m_pull;           // P, whose gradient over ρ̃* leads the ink (see the top)
+    std::vector<double> m_depth;          // Φ, the target's signed depth
 };
 
 } // namespace vf::sim
