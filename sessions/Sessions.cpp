@@ -5,7 +5,9 @@
 #include <QFont>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -140,6 +142,50 @@ model::Scene shapeDesign(const ShapeDesignOptions& o, const std::vector<sim::Pol
     return scene;
 }
 
+model::Scene gather(const GatherOptions& o, std::uint32_t seed)
+{
+    Dice dice(seed);
+    model::Scene scene = baseScene(o.maxSpacing, o.dt, std::llround((o.seconds + 0.5) / o.dt));
+    scene.flow.gridX = scene.flow.gridY = 128;
+    scene.flow.viscosity = 0.005;
+    scene.tracking.areaCorrection = true;
+    // The word, set at size 1 to measure it, then fitted to 84 % of the canvas's width (at most
+    // 0.45 tall) and centred about a baseline in the lower half.
+    static const std::array<const char*, 5> kWords{"INK", "FLOW", "VF", "WAVE", "SWIRL"};
+    model::TextTarget word;
+    word.text = QString::fromLatin1(kWords[std::size_t(dice.below(int(kWords.size())))]);
+    word.size = 1.0;
+    sim::Vec2 lo(INFINITY), hi(-INFINITY);
+    for (const sim::Polygon& p : model::targetContours(word, 0.01))
+        for (const sim::Vec2& v : p) {
+            lo = glm::min(lo, v);
+            hi = glm::max(hi, v);
+        }
+    word.size = std::min(0.84 / (hi.x - lo.x), 0.45 / (hi.y - lo.y)) * dice.uniform(0.9, 1.0);
+    word.baseline = {0.5 - word.size * 0.5 * (lo.x + hi.x), 0.5 - word.size * 0.5 * (lo.y + hi.y)};
+    model::GatherStroke g;
+    g.duration = o.seconds;
+    g.target = word;
+    g.contours = model::targetContours(word, o.maxSpacing);
+    // Ovals of aspect 1.6, upright or lying, as many as the seed says, sharing the word's area,
+    // placed at random where they keep clear of each other and of the walls.
+    const int count = std::max(1, int(std::lround(o.ovals * dice.uniform(0.5, 1.5))));
+    const double minor = std::sqrt(sim::filledArea(g.contours) / count / (1.6 * std::numbers::pi)), major = 1.6 * minor;
+    std::vector<sim::Vec2> centres;
+    for (int attempt = 0; int(centres.size()) < count && attempt < 100 * count; ++attempt) {
+        const sim::Vec2 c(dice.uniform(major + 0.02, 1.0 - major - 0.02), dice.uniform(major + 0.02, 1.0 - major - 0.02));
+        if (std::none_of(centres.begin(), centres.end(), [&](sim::Vec2 d) { return glm::distance(c, d) < 2.4 * major; }))
+            centres.push_back(c);
+    }
+    for (std::size_t k = 0; k < centres.size(); ++k) {
+        const sim::Vec2 radii = dice.below(2) == 0 ? sim::Vec2(major, minor) : sim::Vec2(minor, major);
+        scene.regions.push_back({QStringLiteral("oval %1").arg(k + 1), QColor(kInks[k % kInks.size()]), true,
+                                 model::EllipseShape{centres[k], radii}});
+    }
+    scene.strokes.push_back(std::move(g));
+    return scene;
+}
+
 std::vector<sim::Polygon> designLetters(double maxSpacing)
 {
     QFont font(QStringLiteral("DejaVu Sans"));
@@ -159,7 +205,7 @@ std::vector<sim::Polygon> designLetters(double maxSpacing)
 
 const std::vector<std::string>& names()
 {
-    static const std::vector<std::string> list{"marbling", "fine-detail", "shape-design"};
+    static const std::vector<std::string> list{"marbling", "fine-detail", "shape-design", "gather"};
     return list;
 }
 
@@ -171,6 +217,8 @@ std::optional<model::Scene> byName(const std::string& name, std::uint32_t seed)
         return fineDetail({}, seed);
     if (name == "shape-design")
         return shapeDesign({}, designLetters(ShapeDesignOptions{}.maxSpacing), seed);
+    if (name == "gather")
+        return gather({}, seed);
     return std::nullopt;
 }
 

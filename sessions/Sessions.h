@@ -58,8 +58,19 @@ model::Scene shapeDesign(const ShapeDesignOptions& options, const std::vector<si
 // DejaVu Sans Bold across the canvas. Needs a QGuiApplication.
 std::vector<sim::Polygon> designLetters(double maxSpacing);
 
+// Target-driven design (paper §5.3, Figure 9): small ovals scattered over the canvas, their areas
+// adding up to the target word's, gathered into the word. The word, the ovals' count, places and
+// turns vary with the seed. Needs a QGuiApplication (the word's outline).
+struct GatherOptions {
+    int ovals = 60;              // about as many; the seed varies it by up to half
+    double seconds = 6.0;        // the gather's duration; the scene runs 0.5 s longer
+    double maxSpacing = 0.004;
+    double dt = 0.01;
+};
+model::Scene gather(const GatherOptions& options, std::uint32_t seed);
+
 // The names of the sessions, and the session of a name with its default options (nothing for an
-// unknown name). shape-design needs a QGuiApplication (designLetters).
+// unknown name). shape-design and gather need a QGuiApplication (their letters).
 const std::vector<std::string>& names();
 std::optional<model::Scene> byName(const std::string& name, std::uint32_t seed);
 
