@@ -5,6 +5,7 @@
 #include "render/Animation.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -60,7 +61,8 @@ QDoubleSpinBox* secondsBox(const char* name)
 
 } // namespace
 
-AnimationDialog::AnimationDialog(model::Scene scene, QWidget* parent) : QDialog(parent), m_scene(std::move(scene))
+AnimationDialog::AnimationDialog(model::Scene scene, std::optional<model::ProjectDraft> history, QWidget* parent)
+    : QDialog(parent), m_scene(std::move(scene)), m_history(std::move(history))
 {
     setWindowTitle(tr("Export Animation"));
     m_path = new QLineEdit(QDir(documentsFolder()).filePath(QStringLiteral("animation.json")));
@@ -75,10 +77,16 @@ AnimationDialog::AnimationDialog(model::Scene scene, QWidget* parent) : QDialog(
     m_format = new QLabel;
     m_format->setObjectName(QStringLiteral("format"));
 
+    m_source = new QComboBox;
+    m_source->setObjectName(QStringLiteral("source"));
+    m_source->addItem(tr("The scene file, from its start"));
+    m_source->addItem(tr("The history, as it was made"));
+    m_source->setEnabled(m_history.has_value());
+    m_note = new QLabel;
+    m_note->setObjectName(QStringLiteral("note"));
+    m_note->setWordWrap(true);
     m_start = secondsBox("start");
     m_end = secondsBox("end");
-    const double duration = double(m_scene.time.steps) * m_scene.time.dt;
-    m_end->setValue(duration > 0 ? duration : 3.0);
     m_fps = new QSpinBox;
     m_fps->setObjectName(QStringLiteral("fps"));
     m_fps->setRange(1, 240);
@@ -106,11 +114,9 @@ AnimationDialog::AnimationDialog(model::Scene scene, QWidget* parent) : QDialog(
     m_close = buttons->addButton(QDialogButtonBox::Close);
     m_close->setObjectName(QStringLiteral("close"));
 
-    auto* note = new QLabel(tr("Plays the document's scene from its start, with its timed drops and strokes; "
-                               "ink added by hand is not in it."));
-    note->setWordWrap(true);
     auto* form = new QFormLayout(this);
-    form->addRow(note);
+    form->addRow(tr("Play:"), m_source);
+    form->addRow(m_note);
     form->addRow(tr("File:"), pathRow);
     form->addRow(tr("Format:"), m_format);
     form->addRow(tr("From:"), m_start);
@@ -130,6 +136,31 @@ AnimationDialog::AnimationDialog(model::Scene scene, QWidget* parent) : QDialog(
     connect(m_fps, &QSpinBox::valueChanged, this, &AnimationDialog::updateEnabled);
     connect(buttons, &QDialogButtonBox::accepted, this, &AnimationDialog::start);
     connect(buttons, &QDialogButtonBox::rejected, this, &AnimationDialog::reject);
+    connect(m_source, &QComboBox::currentIndexChanged, this, &AnimationDialog::sourceChanged);
+    sourceChanged();
+}
+
+void AnimationDialog::sourceChanged()
+{
+    double duration = double(m_scene.time.steps) * m_scene.time.dt;
+    if (m_source->currentIndex() == 0) {
+        m_note->setText(tr("Plays the document's scene from its start, with its timed drops and strokes; "
+                           "ink added by hand is not in it."));
+    } else {
+        if (!m_spans)
+            m_spans = m_history->replaySpans(&m_unrecorded);  // waits for the newest state, a step at most
+        duration = 0;
+        for (const model::ReplaySpan& span : *m_spans)
+            duration += double(span.steps) * m_scene.time.dt;
+        QString note = tr("Plays every step of the history again, as it was made: drops, strokes, combs and "
+                          "gathers at the steps they came, %1 s in all.").arg(duration, 0, 'f', 2);
+        if (m_unrecorded > 0)
+            note += u' ' + tr("%n step(s) read from the project file cannot be played again and are left out: "
+                              "projects keep the states, not the pen's path.", nullptr, m_unrecorded);
+        m_note->setText(note);
+    }
+    m_start->setValue(0);
+    m_end->setValue(duration > 0 ? duration : 3.0);
     updateEnabled();
 }
 
@@ -168,7 +199,9 @@ void AnimationDialog::updateEnabled()
     for (QWidget* input : std::initializer_list<QWidget*>{m_path, m_start, m_end, m_fps, m_width})
         input->setEnabled(idle);
     m_transparent->setEnabled(idle && format && format->transparency);
-    m_export->setEnabled(idle && format && frames >= 1);
+    const bool nothingToPlay = m_source->currentIndex() == 1 && m_spans && m_spans->empty();
+    m_export->setEnabled(idle && format && frames >= 1 && !nothingToPlay);
+    m_source->setEnabled(idle && m_history);
     m_close->setText(idle ? tr("Close") : tr("Cancel"));
     if (idle) {
         m_progress->setRange(0, int(std::max<qint64>(1, std::min<qint64>(frames, INT_MAX))));
@@ -188,13 +221,21 @@ void AnimationDialog::start()
     options.background = !(m_transparent->isEnabled() && m_transparent->isChecked());
     m_cancel = false;
     m_result->setText(tr("Exporting…"));
-    // The thread owns its copy of the scene and its own simulation; it reaches the dialog only
-    // through queued calls, which Qt drops if the dialog is gone.
-    m_thread = std::thread([this, scene = m_scene, range, path, options] {
+    // The thread owns its copies of the scene and the spans (immutable states) and its own
+    // simulation; it reaches the dialog only through queued calls, which Qt drops if the dialog is
+    // gone.
+    std::optional<std::vector<model::ReplaySpan>> spans;
+    if (m_source->currentIndex() == 1)
+        spans = m_spans;
+    m_thread = std::thread([this, scene = m_scene, spans, range, path, options] {
         QString error;
         try {
-            model::SceneRunner runner(scene);
-            SceneFrames frames(runner, range, [this] { return m_cancel.load(); });
+            std::unique_ptr<model::Player> player;
+            if (spans)
+                player = std::make_unique<model::HistoryReplay>(scene, *spans);
+            else
+                player = std::make_unique<model::SceneRunner>(scene);
+            SceneFrames frames(*player, range, [this] { return m_cancel.load(); });
             error = render::exportAnimation(frames.animation(), path, options, [this, &frames](int done) {
                 QMetaObject::invokeMethod(this, [this, done] { m_progress->setValue(done); }, Qt::QueuedConnection);
                 return !m_cancel.load() && frames.limit().isEmpty();

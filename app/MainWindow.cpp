@@ -601,10 +601,11 @@ void MainWindow::exportPicture()
         statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(dialog.filePath())), 10000);
 }
 
-// The document's scene, copied: the dialog plays it in a simulation of its own.
+// A draft of the document (its scene and history, copied): the dialog plays either in a
+// simulation of its own.
 void MainWindow::exportAnimation()
 {
-    AnimationDialog dialog(m_document.scene(), this);
+    AnimationDialog dialog(m_document.scene(), m_document.draftProject(), this);
     dialog.exec();
     if (!dialog.writtenPath().isEmpty())
         statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(dialog.writtenPath())), 10000);

@@ -13,8 +13,8 @@ qint64 frameCount(const FrameRange& range)
     return std::llround((range.end - range.start) * range.fps);
 }
 
-SceneFrames::SceneFrames(model::SceneRunner& runner, const FrameRange& range, std::function<bool()> stop)
-    : m_runner(runner), m_range(range), m_stop(std::move(stop))
+SceneFrames::SceneFrames(model::Player& player, const FrameRange& range, std::function<bool()> stop)
+    : m_player(player), m_range(range), m_stop(std::move(stop))
 {
 }
 
@@ -25,17 +25,16 @@ render::Animation SceneFrames::animation()
 
 model::Drawing SceneFrames::frame(int index)
 {
-    const double dt = m_runner.scene().time.dt;
-    const qint64 steps = std::llround((m_range.start + index / m_range.fps) / dt);
-    while (m_runner.stepsDone() < steps && m_limit.isEmpty() && !(m_stop && m_stop())) {
+    const qint64 steps = std::llround((m_range.start + index / m_range.fps) / m_player.dt());
+    while (m_player.stepsDone() < steps && m_limit.isEmpty() && !(m_stop && m_stop())) {
         try {
-            if (m_runner.step(dt).vertexLimitReached)
-                m_limit = vertexLimitLabel(m_runner.simulation()) + QStringLiteral(" reached");
+            if (m_player.step().vertexLimitReached)
+                m_limit = vertexLimitLabel(m_player.simulation()) + QStringLiteral(" reached");
         } catch (const sim::opencl::DeviceError& e) {  // e.g. the device ran out of memory
             m_limit = QString::fromUtf8(e.what()).section('\n', 0, 0);
         }
     }
-    return m_runner.drawing();
+    return m_player.drawing();
 }
 
 } // namespace vf::app

@@ -1,8 +1,8 @@
 #pragma once
-// A time range of a scene as the frames of an animation: frame k shows the scene played from its
-// start to start + k / fps seconds, to the nearest step of its dt. Shared by `vectorfluid animate`
-// and File ▸ Export Animation.
-#include "model/SceneRunner.h"
+// A time range of a player (a scene, or the history replayed) as the frames of an animation: frame
+// k shows it played from its start to start + k / fps seconds, to the nearest step of its dt.
+// Shared by `vectorfluid animate` and File ▸ Export Animation.
+#include "model/Player.h"
 #include "render/Animation.h"
 
 #include <QString>
@@ -20,11 +20,11 @@ struct FrameRange {
 // round((end - start) × fps): the frames of the range (may be 0 or negative for an empty range).
 qint64 frameCount(const FrameRange& range);
 
-// Plays `runner` forward as the frames are asked for. Stepping stops early when a vertex limit is
+// Plays `player` forward as the frames are asked for. Stepping stops early when a vertex limit is
 // reached or `stop` says so; limit() then says which limit.
 class SceneFrames {
 public:
-    SceneFrames(model::SceneRunner& runner, const FrameRange& range, std::function<bool()> stop = {});
+    SceneFrames(model::Player& player, const FrameRange& range, std::function<bool()> stop = {});
 
     // The animation of frameCount(range) frames (at most INT_MAX).
     render::Animation animation();
@@ -34,7 +34,7 @@ public:
 private:
     model::Drawing frame(int index);
 
-    model::SceneRunner& m_runner;
+    model::Player& m_player;
     FrameRange m_range;
     std::function<bool()> m_stop;
     QString m_limit;

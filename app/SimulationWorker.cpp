@@ -96,6 +96,7 @@ void SimulationWorker::load(const model::Scene& scene, const model::EngineSettin
     m_steps = 0;
     m_pen.clear();
     m_gather.reset();
+    startJournal();
     try {
         if (start) {
             build(settings, start->wait().get());
@@ -131,6 +132,7 @@ void SimulationWorker::configure(const model::EngineSettings& settings)
     const sim::SimulationState state = m_simulation->snapshot();
     try {
         build(settings, &state);
+        record(model::journal::Configure{std::make_shared<const model::EngineSettings>(settings)});
     } catch (const std::exception& e) {
         stopWith(firstLine(e.what()));
     }
@@ -149,7 +151,21 @@ void SimulationWorker::snapshot(const model::StateSlotPtr& into)
         into->fill(std::make_shared<const sim::SimulationState>());
         throw;
     }
-    into->fill(std::make_shared<const sim::SimulationState>(std::move(state)));
+    m_journalHead = std::make_shared<const model::JournalSegment>(model::JournalSegment{std::move(m_entries), m_journalHead});
+    m_entries.clear();
+    into->fill(std::make_shared<const sim::SimulationState>(std::move(state)), {m_journalHead, m_journalStep});
+}
+
+void SimulationWorker::startJournal(const model::JournalMark& mark)
+{
+    m_entries.clear();
+    m_journalHead = mark.head ? mark.head : std::make_shared<const model::JournalSegment>();
+    m_journalStep = mark.head ? mark.step : 0;
+}
+
+void SimulationWorker::record(decltype(model::JournalEntry::action) action)
+{
+    m_entries.push_back({m_journalStep, std::move(action)});
 }
 
 void SimulationWorker::restore(const model::StateSlotPtr& from)
@@ -157,6 +173,7 @@ void SimulationWorker::restore(const model::StateSlotPtr& from)
     const model::StatePtr state = from->wait();
     m_pen.clear();  // the pen and a gather acted on the state being replaced
     m_gather.reset();
+    startJournal(from->waitForMark());
     if (!m_simulation) {  // its load failed: the state brings the work back
         build(m_settings, state.get());
         return;
@@ -173,8 +190,10 @@ void SimulationWorker::restore(const model::StateSlotPtr& from)
 
 void SimulationWorker::addRegion(const std::vector<sim::Polygon>& contours)
 {
-    if (m_simulation)
-        m_simulation->addRegion(contours);
+    if (!m_simulation)
+        return;
+    m_simulation->addRegion(contours);
+    record(model::journal::AddRegion{contours});
 }
 
 void SimulationWorker::removeRegion(int region)
@@ -183,17 +202,24 @@ void SimulationWorker::removeRegion(int region)
         return;
     m_simulation->restore(model::withoutRegion(m_simulation->snapshot(), region));
     m_copying.reset();  // restore() dropped the copy
+    record(model::journal::RemoveRegion{region});
 }
 
 void SimulationWorker::drop(sim::Vec2 center, double radius)
 {
-    if (m_simulation && m_simulation->drop(center, radius).vertexLimitReached)
+    if (!m_simulation)
+        return;
+    record(model::journal::Drop{center, radius});
+    if (m_simulation->drop(center, radius).vertexLimitReached)
         stopWith(tr("vertex limit reached (%1 vertices)").arg(m_simulation->vertexCount()));
 }
 
 void SimulationWorker::applyMap(const sim::ExactMap& map)
 {
-    if (m_simulation && !m_simulation->applyMap(map))
+    if (!m_simulation)
+        return;
+    record(model::journal::Map{std::make_shared<const sim::ExactMap>(map)});
+    if (!m_simulation->applyMap(map))
         stopWith(tr("vertex limit reached (%1 vertices)").arg(m_simulation->vertexCount()));
 }
 
@@ -203,14 +229,12 @@ void SimulationWorker::gather(const std::shared_ptr<const sim::TargetDrive>& dri
         m_gather = Gather{drive, m_simulation->time() + duration};
 }
 
-bool SimulationWorker::driveGather()
+const sim::TargetDrive* SimulationWorker::activeDrive()
 {
-    if (m_gather && m_simulation->time() < m_gather->until) {
-        m_simulation->drive(m_gather->drive->force(m_simulation->regions()));
-        return true;
-    }
+    if (m_gather && m_simulation->time() < m_gather->until)
+        return m_gather->drive.get();
     m_gather.reset();
-    return false;
+    return nullptr;
 }
 
 void SimulationWorker::stylus(const std::vector<sim::StylusSegment>& pens)
@@ -225,16 +249,6 @@ void SimulationWorker::stylus(const std::vector<sim::StylusSegment>& pens)
         for (int k = 0; k < parts; ++k)
             m_pen[first + std::size_t(k)].push_back(pen.part(k, parts));
     }
-}
-
-// One part of each pen a step: each covers about one step's time.
-void SimulationWorker::feedPen()
-{
-    if (m_pen.empty())
-        return;
-    for (const sim::StylusSegment& part : m_pen.front())
-        m_simulation->stylus(part.from, part.to, part.radius, part.duration);
-    m_pen.pop_front();
 }
 
 void SimulationWorker::setPlaying(bool playing)
@@ -290,13 +304,20 @@ void SimulationWorker::step()
     const double dt = m_scene.time.dt;
     const double t = m_simulation->time();
     try {
-        bool limit = m_script->applyTools(*m_simulation, t, t + dt);
-        m_script->applyStylus(*m_simulation, t, t + dt);
-        if (!driveGather())  // the app's gather takes over from the scene's
-            m_script->applyGather(*m_simulation, t);
-        feedPen();
-        limit = m_simulation->step(dt).vertexLimitReached || limit;
+        // One part of each pen a step: each covers about one step's time.
+        std::vector<sim::StylusSegment> pens;
+        if (!m_pen.empty()) {
+            pens = std::move(m_pen.front());
+            m_pen.pop_front();
+        }
+        const sim::TargetDrive* drive = activeDrive();
+        if (drive)
+            record(model::journal::Drive{m_gather->drive});
+        for (const sim::StylusSegment& part : pens)
+            record(model::journal::Pen{part});
+        const bool limit = m_script->step(*m_simulation, t, dt, {drive, pens}).vertexLimitReached;
         ++m_steps;
+        ++m_journalStep;
         if (limit)
             stopWith(tr("vertex limit reached (%1 vertices); paused").arg(m_simulation->vertexCount()));
     } catch (const std::exception& e) {

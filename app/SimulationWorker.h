@@ -7,6 +7,7 @@
 #include "app/KernelWarmUp.h"
 #include "model/EngineSettings.h"
 #include "model/Frame.h"
+#include "model/Journal.h"
 #include "model/SceneScript.h"
 #include "model/StateSlot.h"
 #include "sim/Simulation.h"
@@ -76,8 +77,12 @@ private:
     // falls back and says why).
     void kernelsCompiled(const QString& error);
     bool running() const { return m_playing || m_stroking; }
-    void feedPen();
-    bool driveGather();  // the app's gather, if one is under way; whether it drove
+    // The app's gather, if one is under way; null once it is over.
+    const sim::TargetDrive* activeDrive();
+    // Adds to the journal (model/Journal.h) at the steps taken on this line of work.
+    void record(decltype(model::JournalEntry::action) action);
+    // A new line of work in the journal, or the line of `mark` carried on (a restored state's).
+    void startJournal(const model::JournalMark& mark = {});
     void onRunningChanged(bool wasRunning);
     void step();
     void scheduleStep();
@@ -99,6 +104,10 @@ private:
     bool m_stroking = false;
     // Pen input not yet fed: for each step to come, the parts of the pens' moves it takes.
     std::deque<std::vector<sim::StylusSegment>> m_pen;
+    // The journal: entries since the last snapshot, the newest sealed segment, steps on this line.
+    std::vector<model::JournalEntry> m_entries;
+    std::shared_ptr<const model::JournalSegment> m_journalHead;
+    std::int64_t m_journalStep = 0;
     // The app's gather under way (SimulationPort::gather), until the simulated time `until`.
     struct Gather {
         std::shared_ptr<const sim::TargetDrive> drive;

@@ -94,6 +94,8 @@ void Document::open(const Scene& scene, const EngineSettings& settings, const Re
     m_stepsBefore = m_steps = 0;
     m_time = start ? start->state()->time : 0.0;
     m_port.load(m_scene, settings, start);
+    m_origin = std::make_shared<StateSlot>();
+    m_port.snapshot(m_origin);
     m_restoreSerial = m_port.requestCount();
     applySettings(settings);
     emit regionsAboutToBeReset();
@@ -149,6 +151,8 @@ ProjectDraft Document::draftProject()
     draft.m_scene.flow = m_settings.flow;
     draft.m_scene.tracking = m_settings.tracking;
     draft.m_regions = m_regions;
+    draft.m_settings = m_settings;
+    draft.m_origin = m_origin;
     draft.m_steps = m_steps;
     draft.m_index = m_undo.index();
     for (int i = 0; i < m_undo.count(); ++i) {
@@ -185,6 +189,39 @@ Project ProjectDraft::finish() const
         p.history.push_back(std::move(e));
     }
     return p;
+}
+
+std::vector<ReplaySpan> ProjectDraft::replaySpans(int* unrecorded) const
+{
+    std::vector<ReplaySpan> spans;
+    int left = 0;
+    // From `from` to `to` with these looks and settings; whether the journal holds it.
+    const auto span = [&spans](const StateSlotPtr& from, const StateSlotPtr& to, const RegionTable& looks,
+                               const EngineSettings& settings) {
+        if (!from || !to)
+            return false;
+        const JournalMark start = from->waitForMark(), end = to->waitForMark();
+        std::optional<std::vector<JournalEntry>> entries = entriesBetween(start, end);
+        if (!entries)
+            return false;
+        if (end.step > start.step || !entries->empty())
+            spans.push_back({from->wait(), std::move(*entries), end.step - start.step, looks, settings});
+        return true;
+    };
+    StateSlotPtr reached = m_origin;
+    for (int i = 0; i < m_index; ++i) {
+        const CommandRecord& r = m_records[std::size_t(i)];
+        if (!r.touchesSimulation())
+            continue;
+        span(reached, r.before, r.regionsBefore, r.settingsBefore);  // the flow before it, if any
+        if (!span(r.before, r.after, r.regionsAfter, r.settingsBefore))
+            ++left;
+        reached = r.after;
+    }
+    span(reached, m_now, m_regions, m_settings);
+    if (unrecorded)
+        *unrecorded = left;
+    return spans;
 }
 
 // ---- Regions ----------------------------------------------------------------------------------------

@@ -4,6 +4,7 @@
 // GUI thread; every user action is one command on its QUndoStack (docs/ARCHITECTURE.md, "Undo and the document").
 #include "model/DocumentCommand.h"
 #include "model/Frame.h"
+#include "model/HistoryReplay.h"
 #include "model/Project.h"
 #include "model/SceneScript.h"
 #include "model/SimulationPort.h"
@@ -28,11 +29,19 @@ class ProjectDraft {
 public:
     // Waits for the states the worker is still taking, then puts the project together.
     Project finish() const;
+    // The line of work from the document's opening to now through its done commands, as spans to
+    // play again (model/HistoryReplay.h), oldest first: each command's, and the flow between them
+    // where no command was open. Waits like finish(). Commands whose span the journal does not hold
+    // (those read from a project file) are left out and counted in `unrecorded` (when given).
+    std::vector<ReplaySpan> replaySpans(int* unrecorded = nullptr) const;
+    const Scene& scene() const { return m_scene; }
 
 private:
     friend class Document;
     Scene m_scene;
     RegionTable m_regions;
+    EngineSettings m_settings;
+    StateSlotPtr m_origin;  // the state the document was opened at
     std::int64_t m_steps = 0;
     double m_time = 0.0;  // simulated seconds: of the newest frame, or of the state last restored
     std::vector<CommandRecord> m_records;  // the newest, if still open, ends at m_now
@@ -170,6 +179,7 @@ private:
     double m_time = 0.0;  // simulated seconds: of the newest frame, or of the state last restored
     std::uint64_t m_revision = 0;
     std::uint64_t m_restoreSerial = 0;  // frames older than the last restore or load are stale
+    StateSlotPtr m_origin;              // the state at the opening, where a replay of the history starts
     std::size_t m_historyBudget = defaultHistoryBudget;
     bool m_rebuilding = false;          // rebuildHistory() replays commands without applying them
     std::weak_ptr<const CommandRecord> m_stroke;  // the last stroke begun; it takes the pen while its command is open

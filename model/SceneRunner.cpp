@@ -44,10 +44,7 @@ sim::StepReport SceneRunner::step(double dt)
     // land a few ulps off, which could let a drop fall between two steps' windows.
     const double t = m_clock;
     m_clock += dt;
-    m_vertexLimitReached = m_script.applyTools(*m_simulation, t, m_clock) || m_vertexLimitReached;
-    m_script.applyStylus(*m_simulation, t, m_clock);
-    m_script.applyGather(*m_simulation, t);
-    sim::StepReport report = m_simulation->step(dt);
+    sim::StepReport report = m_script.step(*m_simulation, t, dt);
     report.vertexLimitReached = report.vertexLimitReached || m_vertexLimitReached;
     m_vertexLimitReached = report.vertexLimitReached;
     ++m_steps;

@@ -139,4 +139,19 @@ void SceneScript::applyGather(sim::Simulation& simulation, double from) const
         }
 }
 
+sim::StepReport SceneScript::step(sim::Simulation& simulation, double from, double dt, const LiveInputs& live) const
+{
+    const bool limit = applyTools(simulation, from, from + dt);
+    applyStylus(simulation, from, from + dt);
+    if (live.drive)
+        simulation.drive(live.drive->force(simulation.regions()));
+    else
+        applyGather(simulation, from);
+    for (const sim::StylusSegment& part : live.pens)
+        simulation.stylus(part.from, part.to, part.radius, part.duration);
+    sim::StepReport report = simulation.step(dt);
+    report.vertexLimitReached = report.vertexLimitReached || limit;
+    return report;
+}
+
 } // namespace vf::model

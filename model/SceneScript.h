@@ -8,8 +8,16 @@
 #include "sim/TargetDrive.h"
 
 #include <memory>
+#include <span>
 
 namespace vf::model {
+
+// What the app adds to a step: a drive (its gather, which takes over from the script's) and the
+// pens' parts for this step, fed after the script's strokes.
+struct LiveInputs {
+    const sim::TargetDrive* drive = nullptr;
+    std::span<const sim::StylusSegment> pens;
+};
 
 class SceneScript {
 public:
@@ -29,14 +37,20 @@ public:
     // maps (combs, circular combs, swirls) in file order (a tool in the water is stylus strokes).
     // Returns whether one took the vertex count to tracking.max_vertices.
     bool applyTools(sim::Simulation& simulation, double from, double to) const;
+
+    // One step of `dt` from the time `from`, in the order every player keeps (the app, the command
+    // line, a replayed history): the tools due in (from, from + dt], the stylus strokes' share, the
+    // drive, the pens, then the simulation's step. The report also says whether a tool took the
+    // vertex count to tracking.max_vertices.
+    sim::StepReport step(sim::Simulation& simulation, double from, double dt, const LiveInputs& live = {}) const;
+
+private:
     // The stylus strokes' share of (from, to]: every piece of a pen path overlapping the interval
     // acts with the part of it inside the interval.
     void applyStylus(sim::Simulation& simulation, double from, double to) const;
     // The gather (target-driven design) whose span [time, time + duration) holds `from`, driving
     // the next step from the ink as it is (the one latest in the file where spans overlap).
     void applyGather(sim::Simulation& simulation, double from) const;
-
-private:
     bool applyDrops(sim::Simulation& simulation, double from, double to) const;
     bool applyMaps(sim::Simulation& simulation, double from, double to) const;
     // One of the scene's tools (a pattern: each of its tools in turn).

@@ -1,0 +1,125 @@
+// File ▸ Export Animation…, "The history, as it was made", through the real window: a drop clicked
+// and a stroke dragged on the canvas, with single steps (the . key) before, between and after, are
+// played again at the steps they came. The replay takes as many steps as the document did since it
+// was opened and ends in the live state exactly (both run the reference backend, which is
+// deterministic), and the Lottie file the dialog writes has a frame per step.
+#include "FindChild.h"
+#include "WindowTest.h"
+#include "app/AnimationDialog.h"
+#include "app/MainWindow.h"
+#include "model/SceneFile.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonValue>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTest>
+
+using namespace vf;
+using namespace vf::app;
+
+class TestHistoryAnimation : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        test::useTestSettings("tst_historyanimation", m_dir);
+        model::Scene scene;
+        scene.flow.gridX = scene.flow.gridY = 32;
+        scene.time.dt = 0.01;
+        scene.tracking.maxSpacing = 0.01;
+        scene.regions.push_back({QStringLiteral("ink"), QColor(0x1d, 0x35, 0x57), true, model::CircleShape{{0.5, 0.5}, 0.2}});
+        m_scenePath = m_dir.filePath(QStringLiteral("small.vfscene"));
+        QCOMPARE(model::writeSceneFile(scene, m_scenePath), QString());
+    }
+
+    void historyIsPlayedAgainAsItWasMade()
+    {
+        MainWindow w;
+        w.setReport([](const QString&, const QString& text) { QFAIL(qPrintable(text)); });
+        QVERIFY(test::showActive(w));
+        QVERIFY(w.openFile(m_scenePath));
+        w.simulation().setPlaying(false);
+        Canvas& canvas = w.canvas();
+        const auto at = [&canvas](double x, double y) { return canvas.mapFromCanvas({x, y}).toPoint(); };
+
+        QTest::keyClick(&w, Qt::Key_Period);
+        QTest::keyClick(&w, Qt::Key_D);
+        QTest::mouseClick(&canvas, Qt::LeftButton, {}, at(0.25, 0.3));
+        for (int k = 0; k < 3; ++k)
+            QTest::keyClick(&w, Qt::Key_Period);
+        QTest::keyClick(&w, Qt::Key_S);
+        QTest::mousePress(&canvas, Qt::LeftButton, {}, at(0.15, 0.6));
+        for (int i = 1; i <= 8; ++i) {
+            QTest::qWait(20);  // the water runs while the pen is down
+            QTest::mouseMove(&canvas, at(0.15 + 0.08 * i, 0.6), 20);
+        }
+        QTest::mouseRelease(&canvas, Qt::LeftButton, {}, at(0.79, 0.6), 20);
+        QTest::keyClick(&w, Qt::Key_Period);
+        w.simulation().sync();
+        const std::int64_t steps = w.simulation().frame()->steps;
+
+        const model::ProjectDraft draft = w.document().draftProject();
+        int unrecorded = -1;
+        const std::vector<model::ReplaySpan> spans = draft.replaySpans(&unrecorded);
+        QCOMPARE(unrecorded, 0);
+        std::int64_t spanSteps = 0;
+        for (const model::ReplaySpan& span : spans)
+            spanSteps += span.steps;
+        QCOMPARE(spanSteps, steps);
+        QVERIFY2(steps > 6, qPrintable(QString::number(steps)));  // the stroke's steps too
+        model::HistoryReplay replay(draft.scene(), spans);
+        for (std::int64_t k = 0; k < steps; ++k)
+            replay.step();
+        const sim::SimulationState live = draft.finish().state;
+        QCOMPARE(replay.simulation().regionCount(), 2);
+        QVERIFY(replay.simulation().snapshot() == live);
+
+        const QString json = m_dir.filePath(QStringLiteral("history.json"));
+        test::whenModal<AnimationDialog>([json](AnimationDialog* dialog) {
+            auto* source = test::child<QComboBox>(*dialog, "source");
+            source->setFocus();
+            QTest::keyClick(source, Qt::Key_Down);  // the history
+            test::child<QLineEdit>(*dialog, "path")->setText(json);
+            test::child<QSpinBox>(*dialog, "fps")->setValue(100);  // a frame a step
+            QTest::mouseClick(test::child<QPushButton>(*dialog, "export"), Qt::LeftButton);
+            static_cast<void>(QTest::qWaitFor([dialog] { return !dialog->running(); }, 30000));  // checked below
+            QTest::mouseClick(test::child<QPushButton>(*dialog, "close"), Qt::LeftButton);
+        });
+        QMenu* file = w.menuBar()->actions().front()->menu();
+        QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(file->menuAction()).center());
+        const QList<QAction*> actions = file->actions();
+        QAction* exportAnimation = *std::find_if(actions.begin(), actions.end(), [](QAction* a) {
+            return a->text() == QStringLiteral("Export &Animation…");
+        });
+        QTest::mouseClick(file, Qt::LeftButton, {}, file->actionGeometry(exportAnimation).center());
+        QFile written(json);
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        const QJsonObject lottie = QJsonDocument::fromJson(written.readAll()).object();
+        QCOMPARE(lottie[QLatin1String("op")].toInt(), int(steps));
+        QStringList layers;
+        for (const QJsonValue& layer : lottie[QLatin1String("layers")].toArray())
+            layers << layer[QLatin1String("nm")].toString();
+        QVERIFY2(layers.contains(QStringLiteral("ink")) && layers.filter(QStringLiteral("drop")).size() == 1,
+                 qPrintable(layers.join(u", ")));  // the scene's ink and the drop
+        w.document().undoStack().setClean();  // no prompt on close
+    }
+
+private:
+    QTemporaryDir m_dir;
+    QString m_scenePath;
+};
+
+QTEST_MAIN(TestHistoryAnimation)
+#include "tst_historyanimation.moc"
