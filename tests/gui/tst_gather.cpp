@@ -1,6 +1,7 @@
 // Tools ▸ Gather Into… in the main window, by keys: Ctrl+Shift+G opens the dialog, which outlines the
 // text typed and refuses blank text; OK gathers the ink into it while the simulation plays, one step
 // of the history, and the undo key takes it back. The drops beside the word's letter move toward it.
+// The Gathering box sets the drive's gathering term.
 #include "FindChild.h"
 #include "WindowTest.h"
 #include "app/GatherDialog.h"
@@ -10,6 +11,7 @@
 #include "sim/Coverage.h"
 
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -77,6 +79,27 @@ private slots:
         QVERIFY(!okEnabled);
         QCOMPARE(summary, QStringLiteral("Type the text to gather into."));
         QCOMPARE(w.document().undoStack().count(), 0);
+    }
+
+    // The Gathering box, typed into, sets the gathering term of the drive the dialog gives.
+    void gatheringIsTypedInTheDialog()
+    {
+        MainWindow w;
+        QVERIFY(test::showActive(w));
+        QVERIFY(w.openFile(m_scenePath));
+        double before = -1.0, typed = -1.0;
+        test::whenModal<GatherDialog>([&](GatherDialog* dialog) {
+            before = dialog->choice().drive.gathering;
+            auto* box = test::child<QDoubleSpinBox>(*dialog, "gatherGathering");
+            box->setFocus();
+            box->selectAll();
+            QTest::keyClicks(box, QStringLiteral("12"));
+            typed = dialog->choice().drive.gathering;
+            QTest::keyClick(dialog, Qt::Key_Escape);
+        });
+        QTest::keyClick(&w, Qt::Key_G, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(before, sim::TargetDriveSettings{}.gathering);
+        QCOMPARE(typed, 12.0);
     }
 
     void gatherIntoTextIsOneStepThatPlays()
