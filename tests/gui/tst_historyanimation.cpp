@@ -18,8 +18,6 @@
 #include <QJsonValue>
 #include <QLabel>
 #include <QLineEdit>
-#include <QMenu>
-#include <QMenuBar>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTest>
@@ -97,13 +95,7 @@ private slots:
             static_cast<void>(QTest::qWaitFor([dialog] { return !dialog->running(); }, 30000));  // checked below
             QTest::mouseClick(test::child<QPushButton>(*dialog, "close"), Qt::LeftButton);
         });
-        QMenu* file = w.menuBar()->actions().front()->menu();
-        QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(file->menuAction()).center());
-        const QList<QAction*> actions = file->actions();
-        QAction* exportAnimation = *std::find_if(actions.begin(), actions.end(), [](QAction* a) {
-            return a->text() == QStringLiteral("Export &Animation…");
-        });
-        QTest::mouseClick(file, Qt::LeftButton, {}, file->actionGeometry(exportAnimation).center());
+        test::clickFileMenuItem(w, QStringLiteral("Export &Animation"));
         QFile written(json);
         QVERIFY(written.open(QIODevice::ReadOnly));
         const QJsonObject lottie = QJsonDocument::fromJson(written.readAll()).object();

@@ -572,14 +572,7 @@ private slots:
             static_cast<void>(QTest::qWaitFor([dialog] { return !dialog->running(); }, 30000));  // checked below
             QTest::mouseClick(test::child<QPushButton>(*dialog, "close"), Qt::LeftButton);  // closes it, done or not
         });
-        QMenu* file = w.menuBar()->actions().front()->menu();
-        QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(file->menuAction()).center());
-        const QList<QAction*> actions = file->actions();
-        QAction* exportAnimation = *std::find_if(actions.begin(), actions.end(), [](QAction* a) {
-            return a->text() == QStringLiteral("Export &Animation…");
-        });
-        QTest::mouseClick(file, Qt::LeftButton, {}, file->actionGeometry(exportAnimation).center());
-        QApplication::setActiveWindow(&w);  // the offscreen platform leaves the menu active
+        test::clickFileMenuItem(w, QStringLiteral("Export &Animation"));
         QVERIFY(QFileInfo::exists(json));
         QVERIFY2(w.statusBar()->currentMessage().contains(QDir::toNativeSeparators(json)), qPrintable(w.statusBar()->currentMessage()));
         QVERIFY(geometry(w) == before);
@@ -606,13 +599,7 @@ private slots:
                 name->setText(typed);
                 QTest::keyClick(name, Qt::Key_Return);
             });
-            QMenu* file = w.menuBar()->actions().front()->menu();
-            QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(file->menuAction()).center());
-            const QList<QAction*> actions = file->actions();  // a copy: begin and end of one list
-            QAction* saveAs = *std::find_if(actions.begin(), actions.end(),
-                                            [](QAction* a) { return a->text().startsWith(QStringLiteral("Save &As")); });
-            QTest::mouseClick(file, Qt::LeftButton, {}, file->actionGeometry(saveAs).center());
-            QApplication::setActiveWindow(&w);  // the offscreen platform leaves the menu active
+            test::clickFileMenuItem(w, QStringLiteral("Save &As"));
         };
         saveAsByMouse({});
         QCOMPARE(offered, QDir(documentsFolder()).filePath(QStringLiteral("small.vfproj")));
