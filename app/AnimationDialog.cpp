@@ -147,11 +147,9 @@ void AnimationDialog::sourceChanged()
         m_note->setText(tr("Plays the document's scene from its start, with its timed drops and strokes; "
                            "ink added by hand is not in it."));
     } else {
-        if (!m_spans)
-            m_spans = m_history->replaySpans(&m_unrecorded);  // waits for the newest state, a step at most
-        duration = 0;
-        for (const model::ReplaySpan& span : *m_spans)
-            duration += double(span.steps) * m_scene.time.dt;
+        if (!m_spans)  // waits for the newest state, which the worker takes between two steps
+            m_spans = m_history->replaySpans(&m_unrecorded);
+        duration = model::replayDuration(*m_spans, m_scene.time.dt);
         QString note = tr("Plays every step of the history again, as it was made: drops, strokes, combs and "
                           "gathers at the steps they came, %1 s in all.").arg(duration, 0, 'f', 2);
         if (m_unrecorded > 0)

@@ -23,12 +23,12 @@ HistoryReplay::HistoryReplay(Scene scene, std::vector<ReplaySpan> spans, const S
     begin(0);
 }
 
-double HistoryReplay::duration() const
+double replayDuration(const std::vector<ReplaySpan>& spans, double dt)
 {
     std::int64_t steps = 0;
-    for (const ReplaySpan& span : m_spans)
+    for (const ReplaySpan& span : spans)
         steps += span.steps;
-    return double(steps) * dt();
+    return double(steps) * dt;
 }
 
 void HistoryReplay::build(const EngineSettings& settings, const sim::SimulationState& state)

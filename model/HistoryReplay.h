@@ -28,6 +28,9 @@ struct ReplaySpan {
     EngineSettings settings;  // at its start
 };
 
+// Seconds of simulated time the spans take together, at `dt` a step.
+double replayDuration(const std::vector<ReplaySpan>& spans, double dt);
+
 class HistoryReplay final : public Player {
 public:
     // `scene`: the document's (its canvas and timed tools). Throws std::invalid_argument (one line)
@@ -35,8 +38,7 @@ public:
     HistoryReplay(Scene scene, std::vector<ReplaySpan> spans,
                   const SimulationFactory& factory = sim::makeReferenceSimulation);
 
-    // Seconds of simulated time the spans take together.
-    double duration() const;
+    double duration() const { return replayDuration(m_spans, dt()); }
 
     double dt() const override { return m_scene.time.dt; }
     std::int64_t stepsDone() const override { return m_steps; }
