@@ -81,7 +81,6 @@ AnimationDialog::AnimationDialog(model::Scene scene, std::optional<model::Projec
     m_source->setObjectName(QStringLiteral("source"));
     m_source->addItem(tr("The scene file, from its start"));
     m_source->addItem(tr("The history, as it was made"));
-    m_source->setEnabled(m_history.has_value());
     m_note = new QLabel;
     m_note->setObjectName(QStringLiteral("note"));
     m_note->setWordWrap(true);

@@ -229,10 +229,10 @@ void SimulationWorker::gather(const std::shared_ptr<const sim::TargetDrive>& dri
         m_gather = Gather{drive, m_simulation->time() + duration};
 }
 
-const sim::TargetDrive* SimulationWorker::activeDrive()
+std::shared_ptr<const sim::TargetDrive> SimulationWorker::activeDrive()
 {
     if (m_gather && m_simulation->time() < m_gather->until)
-        return m_gather->drive.get();
+        return m_gather->drive;
     m_gather.reset();
     return nullptr;
 }
@@ -310,12 +310,12 @@ void SimulationWorker::step()
             pens = std::move(m_pen.front());
             m_pen.pop_front();
         }
-        const sim::TargetDrive* drive = activeDrive();
+        const std::shared_ptr<const sim::TargetDrive> drive = activeDrive();
         if (drive)
-            record(model::journal::Drive{m_gather->drive});
+            record(model::journal::Drive{drive});
         for (const sim::StylusSegment& part : pens)
             record(model::journal::Pen{part});
-        const bool limit = m_script->step(*m_simulation, t, dt, {drive, pens}).vertexLimitReached;
+        const bool limit = m_script->step(*m_simulation, t, dt, {drive.get(), pens}).vertexLimitReached;
         ++m_steps;
         ++m_journalStep;
         if (limit)

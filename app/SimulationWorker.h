@@ -77,8 +77,8 @@ private:
     // falls back and says why).
     void kernelsCompiled(const QString& error);
     bool running() const { return m_playing || m_stroking; }
-    // The app's gather, if one is under way; null once it is over.
-    const sim::TargetDrive* activeDrive();
+    // The app's gather's drive, if one is under way; null once it is over.
+    std::shared_ptr<const sim::TargetDrive> activeDrive();
     // Adds to the journal (model/Journal.h) at the steps taken on this line of work.
     void record(decltype(model::JournalEntry::action) action);
     // A new line of work in the journal, or the line of `mark` carried on (a restored state's).

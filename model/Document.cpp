@@ -1,6 +1,7 @@
-// The document (model/Document.h): opening and saving, the regions, the commands, the history's
-// memory. About 550 lines, kept as one because every part works on the same undo stack and command
-// records; its sections below are the seams to split along should one part grow.
+// The document (model/Document.h): opening and drafting, the regions, the commands, the history's
+// memory. About 600 lines, kept as one because every part works on the same undo stack and command
+// records; its sections below are the seams to split along should one part grow. What a draft
+// does once taken (a project, the spans of a replay) is in ProjectDraft.cpp.
 #include "model/Document.h"
 
 #include "model/Patterns.h"
@@ -165,63 +166,6 @@ ProjectDraft Document::draftProject()
         draft.m_records.push_back(std::move(r));
     }
     return draft;
-}
-
-Project ProjectDraft::finish() const
-{
-    Project p;
-    p.scene = m_scene;
-    p.regions = m_regions;
-    p.steps = m_steps;
-    p.state = *m_now->wait();
-    p.historyIndex = m_index;
-    for (const CommandRecord& r : m_records) {
-        HistoryEntry e;
-        e.text = r.text;
-        e.regionsBefore = r.regionsBefore;
-        e.regionsAfter = r.regionsAfter;
-        e.flowBefore = r.settingsBefore.flow;
-        e.trackingBefore = r.settingsBefore.tracking;
-        e.flowAfter = r.settingsAfter.flow;
-        e.trackingAfter = r.settingsAfter.tracking;
-        e.before = r.before ? r.before->wait() : nullptr;
-        e.after = r.after ? r.after->wait() : nullptr;
-        p.history.push_back(std::move(e));
-    }
-    return p;
-}
-
-std::vector<ReplaySpan> ProjectDraft::replaySpans(int* unrecorded) const
-{
-    std::vector<ReplaySpan> spans;
-    int left = 0;
-    // From `from` to `to` with these looks and settings; whether the journal holds it.
-    const auto span = [&spans](const StateSlotPtr& from, const StateSlotPtr& to, const RegionTable& looks,
-                               const EngineSettings& settings) {
-        if (!from || !to)
-            return false;
-        const JournalMark start = from->waitForMark(), end = to->waitForMark();
-        std::optional<std::vector<JournalEntry>> entries = entriesBetween(start, end);
-        if (!entries)
-            return false;
-        if (end.step > start.step || !entries->empty())
-            spans.push_back({from->wait(), std::move(*entries), end.step - start.step, looks, settings});
-        return true;
-    };
-    StateSlotPtr reached = m_origin;
-    for (int i = 0; i < m_index; ++i) {
-        const CommandRecord& r = m_records[std::size_t(i)];
-        if (!r.touchesSimulation())
-            continue;
-        span(reached, r.before, r.regionsBefore, r.settingsBefore);  // the flow before it, if any
-        if (!span(r.before, r.after, r.regionsAfter, r.settingsBefore))
-            ++left;
-        reached = r.after;
-    }
-    span(reached, m_now, m_regions, m_settings);
-    if (unrecorded)
-        *unrecorded = left;
-    return spans;
 }
 
 // ---- Regions ----------------------------------------------------------------------------------------
