@@ -31,6 +31,7 @@ void validateDriveSettings(const TargetDriveSettings& s)
 TargetDrive::TargetDrive(const std::vector<std::vector<Polygon>>& target, const FluidSettings& fluid,
                          const TargetDriveSettings& settings)
     : m_settings(settings)
+    , m_target(target)
     , m_cells{fluid.nx, fluid.ny, fluid.width, fluid.height}
 {
     validateDriveSettings(settings);

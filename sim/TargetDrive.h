@@ -58,9 +58,13 @@ public:
     BodyForce force(const std::vector<std::vector<Polygon>>& ink) const;
 
     const TargetDriveSettings& settings() const { return m_settings; }
+    // What it was made from, so that it can be written down and made again (a project's journal).
+    const std::vector<std::vector<Polygon>>& target() const { return m_target; }
+    FluidSettings grid() const { return {m_cells.cols, m_cells.rows, m_cells.width, m_cells.height}; }
 
 private:
     TargetDriveSettings m_settings;
+    std::vector<std::vector<Polygon>> m_target;
     CellLattice m_cells;
     std::vector<double> m_blurredTarget;  // ρ̃* on the cells, floored
     std::vector<double> m_pull;           // P, whose gradient over ρ̃* leads the ink (see the top)
