@@ -1,5 +1,5 @@
-// `vectorfluid animate SCENE --out FILE ...`: play a scene headless and write a time range of it as
-// an animation (docs/command-line.md, docs/animation.md).
+// `vectorfluid animate SCENE --out FILE ...`: play a scene headless, or a project's history again,
+// and write a time range of it as an animation (docs/command-line.md, docs/animation.md).
 #include "app/Backend.h"
 #include "app/CommandLine.h"
 #include "app/Commands.h"
@@ -9,6 +9,8 @@
 #include "app/RenderSignals.h"
 #include "app/SceneFrames.h"
 #include "model/AtomicFile.h"
+#include "model/HistoryReplay.h"
+#include "model/ProjectFile.h"
 #include "model/SceneFile.h"
 #include "model/SceneRunner.h"
 #include "render/Animation.h"
@@ -26,12 +28,13 @@ namespace vf::app {
 namespace {
 
 const char* const animateUsage =
-    "usage: vectorfluid animate SCENE (--out FILE | --frames DIR [--frame-format F]) [--start S] [--end S]\n"
-    "                           [--fps N] [--width N] [--transparent] [--polyline]\n"
+    "usage: vectorfluid animate SCENE|PROJECT (--out FILE | --frames DIR [--frame-format F]) [--start S]\n"
+    "                           [--end S] [--fps N] [--width N] [--transparent] [--polyline]\n"
     "                           [--backend reference|opencl] [--device N]\n"
-    "Plays SCENE headless and writes the time from --start to --end as an animation: FILE.json\n"
-    "(Lottie), FILE.svg (animated SVG), FILE.pdf (a page a frame), FILE.mp4 or FILE.gif (video,\n"
-    "through ffmpeg); or each frame as DIR/frame-NNNNNN.svg (or .pdf, .eps, .png).\n";
+    "Plays SCENE (.vfscene) headless, or the history of PROJECT (.vfproj) again as it was made, and\n"
+    "writes the time from --start to --end as an animation: FILE.json (Lottie), FILE.svg (animated\n"
+    "SVG), FILE.pdf (a page a frame), FILE.mp4 or FILE.gif (video, through ffmpeg); or each frame as\n"
+    "DIR/frame-NNNNNN.svg (or .pdf, .eps, .png).\n";
 
 struct AnimateOptions {
     QString scene;
@@ -54,7 +57,7 @@ void addOptions(QCommandLineParser& parser)
         {"frames", "DIR", "Instead, each frame as DIR/frame-NNNNNN.svg; DIR is created."},
         {"frame-format", "F", "The frames' format: svg (default), pdf, eps or png."},
         {"start", "S", "Seconds of scene time where the animation starts (default 0)."},
-        {"end", "S", "Seconds of scene time where it ends (default: the scene's time.steps x time.dt)."},
+        {"end", "S", "Seconds of scene time where it ends (default: the scene's time.steps x time.dt, or the whole history)."},
         {"fps", "N", "Frames per second (default 30)."},
         {"width", "N", "Width in points, which Lottie and video take as pixels (default 576)."},
         {"transparent", "", "Leave the background out (not in .mp4)."},
@@ -65,7 +68,8 @@ void addOptions(QCommandLineParser& parser)
     for (const auto& [name, valueName, description] : options)
         parser.addOption(QCommandLineOption(QString::fromLatin1(name), QString::fromUtf8(description),
                                             QString::fromLatin1(valueName)));
-    parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("The scene file (.vfscene) to play."));
+    parser.addPositionalArgument(QStringLiteral("SCENE|PROJECT"),
+                                 QStringLiteral("The scene file (.vfscene) to play, or the project (.vfproj) whose history to play again."));
 }
 
 // The options, or nullopt with `error` set to one line.
@@ -127,6 +131,45 @@ std::optional<AnimateOptions> animateOptions(const QCommandLineParser& parser, Q
     return o;
 }
 
+// What to play: a scene from its start, or a project's history again (its spans).
+struct Playable {
+    model::Scene scene;
+    std::optional<std::vector<model::ReplaySpan>> history;
+    QString notice;  // commands of the history that cannot be played again, if any
+
+    double duration() const
+    {
+        return history ? model::replayDuration(*history, scene.time.dt) : double(scene.time.steps) * scene.time.dt;
+    }
+};
+
+bool isProjectPath(const QString& path) { return path.endsWith(QLatin1String(".vfproj"), Qt::CaseInsensitive); }
+
+std::optional<Playable> readPlayable(const QString& path, QString& error)
+{
+    if (!isProjectPath(path)) {
+        model::SceneReadResult read = model::readSceneFile(path);
+        error = read.error;
+        return read.ok() ? std::optional<Playable>(Playable{std::move(read.scene), std::nullopt, {}}) : std::nullopt;
+    }
+    const model::ProjectReadResult read = model::readProjectFile(path);
+    if (!read.ok()) {
+        error = read.error;
+        return std::nullopt;
+    }
+    int unrecorded = 0;
+    std::vector<model::ReplaySpan> spans = model::replaySpans(read.project, &unrecorded);
+    if (spans.empty()) {
+        error = QStringLiteral("%1: its history holds no step that can be played again").arg(path);
+        return std::nullopt;
+    }
+    Playable playable{read.project.scene, std::move(spans), {}};
+    if (unrecorded > 0)
+        playable.notice = QStringLiteral("%1: %2 command(s) of its history were saved without what they did, and are left out")
+                              .arg(path).arg(unrecorded);
+    return playable;
+}
+
 // Fails before any simulation when the output could not be written: its folder must exist (a
 // frames folder is created) and a temporary is created and removed where the file would go.
 QString checkOutput(const AnimateOptions& options, qint64 frames)
@@ -156,20 +199,19 @@ int animateCommand(const QStringList& arguments)
         printError(error);
         return BadInput;
     }
-    const model::SceneReadResult read = model::readSceneFile(options->scene);
-    if (!read.ok()) {
-        printError(read.error);
+    const std::optional<Playable> read = readPlayable(options->scene, error);
+    if (!read) {
+        printError(error);
         return BadInput;
     }
-    const FrameRange range{options->start, options->end.value_or(double(read.scene.time.steps) * read.scene.time.dt),
-                           options->fps};
+    const FrameRange range{options->start, options->end.value_or(read->duration()), options->fps};
     const qint64 frames = frameCount(range);
     if (frames < 1 || frames > 100'000'000) {
         printError(QStringLiteral("%1 to %2 s at %3 fps is %4 frames (1 to 100000000)")
                        .arg(range.start).arg(range.end).arg(range.fps).arg(frames));
         return BadInput;
     }
-    if (const QString error = checkMemory(read.scene, RenderOptions{}, availableMemory()); !error.isEmpty()) {
+    if (const QString error = checkMemory(read->scene, RenderOptions{}, availableMemory()); !error.isEmpty()) {
         printError(QStringLiteral("%1: %2").arg(options->scene, error));
         return BadInput;
     }
@@ -182,11 +224,17 @@ int animateCommand(const QStringList& arguments)
     QString limit;  // the limit that stopped the run, if one did
     int framesDone = 0;
     try {
-        model::SceneRunner runner(read.scene, [&](const sim::SimulationSettings& settings) {
+        const model::SimulationFactory factory = [&](const sim::SimulationSettings& settings) {
             return makeBackend(settings, options->backend, options->device, notice);
-        });
+        };
+        std::unique_ptr<model::Player> player;
+        if (read->history)
+            player = std::make_unique<model::HistoryReplay>(read->scene, *read->history, factory);
+        else
+            player = std::make_unique<model::SceneRunner>(read->scene, factory);
+        const model::Player& runner = *player;
         RenderProgress progress(frames, QStringLiteral("frame"));
-        SceneFrames sceneFrames(runner, range, interruptRequested);
+        SceneFrames sceneFrames(*player, range, interruptRequested);
         const render::Animation animation = sceneFrames.animation();
         const render::AnimationProgress goOn = [&](int done) {
             framesDone = done;
@@ -214,8 +262,9 @@ int animateCommand(const QStringList& arguments)
         printError(error);
         return BadInput;
     }
-    if (!notice.isEmpty())
-        printError(notice);
+    for (const QString& line : {read->notice, notice})
+        if (!line.isEmpty())
+            printError(line);
     QTextStream(stdout) << "wrote " << (options->framesDir.isEmpty() ? options->out : options->framesDir) << '\n';
     return Done;
 }

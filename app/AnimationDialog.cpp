@@ -152,8 +152,9 @@ void AnimationDialog::sourceChanged()
         QString note = tr("Plays every step of the history again, as it was made: drops, strokes, combs and "
                           "gathers at the steps they came, %1 s in all.").arg(duration, 0, 'f', 2);
         if (m_unrecorded > 0)
-            note += u' ' + tr("%n step(s) read from the project file cannot be played again and are left out: "
-                              "projects keep the states, not the pen's path.", nullptr, m_unrecorded);
+            note += u' ' + tr("%n command(s) read from a project saved by an older version cannot be played again "
+                              "and are left out: such projects kept the states, not what was done between them.",
+                              nullptr, m_unrecorded);
         m_note->setText(note);
     }
     m_start->setValue(0);

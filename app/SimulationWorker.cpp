@@ -96,7 +96,7 @@ void SimulationWorker::load(const model::Scene& scene, const model::EngineSettin
     m_steps = 0;
     m_pen.clear();
     m_gather.reset();
-    startJournal();
+    startJournal(start ? start->waitForMark() : model::JournalMark{});  // a project's state carries its line on
     try {
         if (start) {
             build(settings, start->wait().get());

@@ -85,7 +85,8 @@ void Document::setFilePath(const QString& path)
 
 // ---- Opening and saving --------------------------------------------------------------------------
 
-void Document::open(const Scene& scene, const EngineSettings& settings, const RegionTable& regions, const StateSlotPtr& start)
+void Document::open(const Scene& scene, const EngineSettings& settings, const RegionTable& regions, const StateSlotPtr& start,
+                    const StateSlotPtr& origin)
 {
     m_rebuilding = true;
     m_undo.clear();
@@ -95,8 +96,11 @@ void Document::open(const Scene& scene, const EngineSettings& settings, const Re
     m_stepsBefore = m_steps = 0;
     m_time = start ? start->state()->time : 0.0;
     m_port.load(m_scene, settings, start);
-    m_origin = std::make_shared<StateSlot>();
-    m_port.snapshot(m_origin);
+    m_origin = origin;
+    if (!m_origin) {
+        m_origin = std::make_shared<StateSlot>();
+        m_port.snapshot(m_origin);
+    }
     m_restoreSerial = m_port.requestCount();
     applySettings(settings);
     emit regionsAboutToBeReset();
@@ -114,20 +118,22 @@ void Document::openScene(const Scene& scene, const QString& backend, int device)
 
 void Document::openProject(const Project& project, const QString& backend, int device)
 {
-    open(project.scene, engineSettingsOf(project.scene, backend, device), project.regions,
-         std::make_shared<StateSlot>(std::make_shared<const sim::SimulationState>(project.state)));
-    m_stepsBefore = m_steps = project.steps;
-
-    // One slot per distinct state, so states the file shares stay shared.
+    // One slot per distinct state, so states the file shares stay shared; each with its mark in
+    // the journal the file holds, so the history plays again across the opening.
     std::map<const sim::SimulationState*, StateSlotPtr> slotOfState;
-    auto slotFor = [&slotOfState](const StatePtr& state) -> StateSlotPtr {
+    auto slotFor = [&slotOfState](const StatePtr& state, const JournalMark& mark) -> StateSlotPtr {
         if (!state)
             return nullptr;
         StateSlotPtr& slot = slotOfState[state.get()];
         if (!slot)
-            slot = std::make_shared<StateSlot>(state);
+            slot = std::make_shared<StateSlot>(state, mark);
         return slot;
     };
+    open(project.scene, engineSettingsOf(project.scene, backend, device), project.regions,
+         std::make_shared<StateSlot>(std::make_shared<const sim::SimulationState>(project.state), project.stateMark),
+         slotFor(project.origin, project.originMark));
+    m_stepsBefore = m_steps = project.steps;
+
     std::vector<std::shared_ptr<CommandRecord>> records;
     for (const HistoryEntry& e : project.history) {
         auto r = std::make_shared<CommandRecord>();
@@ -136,8 +142,8 @@ void Document::openProject(const Project& project, const QString& backend, int d
         r->regionsAfter = e.regionsAfter;
         r->settingsBefore = {e.flowBefore, e.trackingBefore, backend, device};
         r->settingsAfter = {e.flowAfter, e.trackingAfter, backend, device};
-        r->before = slotFor(e.before);
-        r->after = slotFor(e.after);
+        r->before = slotFor(e.before, e.beforeMark);
+        r->after = slotFor(e.after, e.afterMark);
         records.push_back(std::move(r));
     }
     rebuildHistory(std::move(records), project.historyIndex, project.historyIndex);

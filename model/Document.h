@@ -153,7 +153,9 @@ signals:
     void filePathChanged(const QString& path);
 
 private:
-    void open(const Scene& scene, const EngineSettings& settings, const RegionTable& regions, const StateSlotPtr& start);
+    // `origin`: where a replay of the history starts; without one, the state once loaded.
+    void open(const Scene& scene, const EngineSettings& settings, const RegionTable& regions, const StateSlotPtr& start,
+              const StateSlotPtr& origin = nullptr);
     // The state now, closing the open command if there is one (its end is this state).
     StateSlotPtr stateNow();
     // Returns the record of the command pushed.

@@ -23,6 +23,41 @@ HistoryReplay::HistoryReplay(Scene scene, std::vector<ReplaySpan> spans, const S
     begin(0);
 }
 
+std::vector<ReplaySpan> replaySpans(const Project& project, int* unrecorded)
+{
+    std::vector<ReplaySpan> spans;
+    int left = 0;
+    // From `from` (taken at `start`) to `end` with these looks and settings; whether the journal
+    // holds it.
+    const auto span = [&spans](const StatePtr& from, const JournalMark& start, const JournalMark& end,
+                               const RegionTable& looks, const FlowSpec& flow, const TrackingSpec& tracking) {
+        if (!from)
+            return false;
+        std::optional<std::vector<JournalEntry>> entries = entriesBetween(start, end);
+        if (!entries)
+            return false;
+        if (end.step > start.step)  // a span without steps shows nothing: the next starts where it ends
+            spans.push_back({from, std::move(*entries), end.step - start.step, looks, EngineSettings{flow, tracking}});
+        return true;
+    };
+    StatePtr reached = project.origin;
+    JournalMark reachedMark = project.originMark;
+    for (int i = 0; i < project.historyIndex; ++i) {
+        const HistoryEntry& e = project.history[std::size_t(i)];
+        if (!e.before)  // a look edit
+            continue;
+        span(reached, reachedMark, e.beforeMark, e.regionsBefore, e.flowBefore, e.trackingBefore);  // the flow before it
+        if (!span(e.before, e.beforeMark, e.afterMark, e.regionsAfter, e.flowBefore, e.trackingBefore))
+            ++left;
+        reached = e.after;
+        reachedMark = e.afterMark;
+    }
+    span(reached, reachedMark, project.stateMark, project.regions, project.scene.flow, project.scene.tracking);
+    if (unrecorded)
+        *unrecorded = left;
+    return spans;
+}
+
 double replayDuration(const std::vector<ReplaySpan>& spans, double dt)
 {
     std::int64_t steps = 0;

@@ -9,6 +9,7 @@
 #include "model/EngineSettings.h"
 #include "model/Journal.h"
 #include "model/Player.h"
+#include "model/Project.h"
 #include "model/Regions.h"
 #include "model/SceneRunner.h"
 #include "model/SceneScript.h"
@@ -27,6 +28,12 @@ struct ReplaySpan {
     RegionTable looks;        // over the span: those at the command's end
     EngineSettings settings;  // at its start
 };
+
+// The line of work from the project's origin to its state through its done commands, as spans to
+// play again, oldest first: each command's, and the flow between them. Commands whose span the
+// journal does not hold (a project written without one) are left out and counted in `unrecorded`
+// (when given).
+std::vector<ReplaySpan> replaySpans(const Project& project, int* unrecorded = nullptr);
 
 // Seconds of simulated time the spans take together, at `dt` a step.
 double replayDuration(const std::vector<ReplaySpan>& spans, double dt);

@@ -2,6 +2,7 @@
 // A project (*.vfproj, docs/project-format.md): everything needed to reopen a piece of work
 // exactly — its settings, the regions as they are now, the simulation state, and the undo history
 // with the states it restores.
+#include "model/Journal.h"
 #include "model/Regions.h"
 #include "model/Scene.h"
 #include "sim/SimulationState.h"
@@ -26,6 +27,9 @@ struct HistoryEntry {
     // The flow and tracking settings at the start and end (they differ for a settings change).
     FlowSpec flowBefore, flowAfter;
     TrackingSpec trackingBefore, trackingAfter;
+    // Where in the journal `before` and `after` were taken (model/Journal.h); null heads where it
+    // is not known.
+    JournalMark beforeMark, afterMark;
 };
 
 struct Project {
@@ -37,6 +41,12 @@ struct Project {
     std::int64_t steps = 0;       // steps taken so far
     std::vector<HistoryEntry> history;
     int historyIndex = 0;         // entries [0, historyIndex) are done, the rest undone (redoable)
+    // The journal's marks of `state` and `origin`: what was done to the simulation between the
+    // states, so that the history can be played again (model/HistoryReplay.h).
+    JournalMark stateMark;
+    // The state the work was opened at, where a replay of the history starts; null where unknown.
+    std::shared_ptr<const sim::SimulationState> origin;
+    JournalMark originMark;
 };
 
 } // namespace vf::model

@@ -11,6 +11,11 @@ Project ProjectDraft::finish() const
     p.regions = m_regions;
     p.steps = m_steps;
     p.state = *m_now->wait();
+    p.stateMark = m_now->waitForMark();
+    if (m_origin) {
+        p.origin = m_origin->wait();
+        p.originMark = m_origin->waitForMark();
+    }
     p.historyIndex = m_index;
     for (const CommandRecord& r : m_records) {
         HistoryEntry e;
@@ -21,8 +26,14 @@ Project ProjectDraft::finish() const
         e.trackingBefore = r.settingsBefore.tracking;
         e.flowAfter = r.settingsAfter.flow;
         e.trackingAfter = r.settingsAfter.tracking;
-        e.before = r.before ? r.before->wait() : nullptr;
-        e.after = r.after ? r.after->wait() : nullptr;
+        if (r.before) {
+            e.before = r.before->wait();
+            e.beforeMark = r.before->waitForMark();
+        }
+        if (r.after) {
+            e.after = r.after->wait();
+            e.afterMark = r.after->waitForMark();
+        }
         p.history.push_back(std::move(e));
     }
     return p;
@@ -30,35 +41,7 @@ Project ProjectDraft::finish() const
 
 std::vector<ReplaySpan> ProjectDraft::replaySpans(int* unrecorded) const
 {
-    std::vector<ReplaySpan> spans;
-    int left = 0;
-    // From `from` to `to` with these looks and settings; whether the journal holds it.
-    const auto span = [&spans](const StateSlotPtr& from, const StateSlotPtr& to, const RegionTable& looks,
-                               const EngineSettings& settings) {
-        if (!from || !to)
-            return false;
-        const JournalMark start = from->waitForMark(), end = to->waitForMark();
-        std::optional<std::vector<JournalEntry>> entries = entriesBetween(start, end);
-        if (!entries)
-            return false;
-        if (end.step > start.step)  // a span without steps shows nothing: the next starts where it ends
-            spans.push_back({from->wait(), std::move(*entries), end.step - start.step, looks, settings});
-        return true;
-    };
-    StateSlotPtr reached = m_origin;
-    for (int i = 0; i < m_index; ++i) {
-        const CommandRecord& r = m_records[std::size_t(i)];
-        if (!r.touchesSimulation())
-            continue;
-        span(reached, r.before, r.regionsBefore, r.settingsBefore);  // the flow before it, if any
-        if (!span(r.before, r.after, r.regionsAfter, r.settingsBefore))
-            ++left;
-        reached = r.after;
-    }
-    span(reached, m_now, m_regions, m_settings);
-    if (unrecorded)
-        *unrecorded = left;
-    return spans;
+    return model::replaySpans(finish(), unrecorded);
 }
 
 } // namespace vf::model

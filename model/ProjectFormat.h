@@ -11,10 +11,11 @@
 
 namespace vf::model::projectformat {
 
-// The first line: the magic word, a space, the version, a newline. Version 2 packs the states'
-// arrays (StateEncoding::Packed) and deflates them; version 1 stored them plain, and still reads.
+// The first line: the magic word, a space, the version, a newline. Version 3 adds the journal
+// between the states ("origin", "drives", each state's "reached"); versions 2 and 3 pack the
+// states' arrays (StateEncoding::Packed) and deflate them; version 1 stored them plain. All read.
 inline constexpr QByteArrayView kMagic = "VFPROJ ";
-inline constexpr int kVersion = 2;
+inline constexpr int kVersion = 3;
 inline constexpr int kOldestVersion = 1;
 inline constexpr qsizetype kMaxHeaderLine = 32;
 // After the header line: the manifest's length in bytes, unsigned 64-bit little-endian.

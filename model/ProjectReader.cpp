@@ -2,6 +2,7 @@
 // one line "<file>: <where>: <what is wrong>", where is "header", "manifest line:col" or a key
 // path of the manifest ("states[2]" for what is wrong inside a state's blob). Lengths from the
 // file are checked against the file's size before anything is allocated for them.
+#include "model/JournalJson.h"
 #include "model/ProjectFile.h"
 #include "model/ProjectFormat.h"
 #include "model/SceneJson.h"
@@ -30,6 +31,14 @@ struct BlobRef {
     qint64 offset = 0;
     qint64 length = 0;
     qint64 rawLength = 0;
+    std::optional<Field> reached;  // read once the drives it may name are (readJournals)
+};
+
+// How a state was reached from another (docs/project-format.md, "Journal").
+struct Reached {
+    qint64 from = kNoState;
+    std::int64_t steps = 0;
+    std::vector<JournalEntry> entries;  // steps counted from `from`
 };
 
 struct HistoryRef {
@@ -44,6 +53,9 @@ struct Manifest {
     qint64 state = 0;
     std::vector<HistoryRef> history;
     std::vector<BlobRef> states;
+    qint64 origin = kNoState;
+    std::vector<DrivePtr> drives;
+    std::vector<std::optional<Reached>> reached;  // per state
 };
 
 // ---- the manifest -----------------------------------------------------------------------------
@@ -79,7 +91,25 @@ const Key<BlobRef> blobKeys[] = {
     {u"offset"_s, true, [](const Field& f, BlobRef& b) { b.offset = jsonInteger(f); }},
     {u"length"_s, true, [](const Field& f, BlobRef& b) { b.length = jsonInteger(f); }},
     {u"raw_length"_s, true, [](const Field& f, BlobRef& b) { b.rawLength = f.integer(1, kMaxRawBlob); }},
+    {u"reached"_s, false, [](const Field& f, BlobRef& b) { b.reached = f; }},
 };
+
+const Key<Reached> reachedKeys[] = {
+    {u"from"_s, true, [](const Field& f, Reached& r) { r.from = jsonInteger(f); }},
+    {u"steps"_s, true, [](const Field& f, Reached& r) { r.steps = jsonInteger(f); }},
+    {u"entries"_s, true, readAlready<Reached>},  // once the steps are known
+};
+
+void readJournals(Manifest& m)
+{
+    for (const BlobRef& blob : m.states) {
+        std::optional<Reached>& reached = m.reached.emplace_back();
+        if (!blob.reached)
+            continue;
+        reached = readAs(*blob.reached, reachedKeys);
+        reached->entries = readJournal(blob.reached->member(u"entries"_s), reached->steps, m.drives);
+    }
+}
 
 const Key<Manifest> manifestKeys[] = {
     {u"scene"_s, true, [](const Field& f, Manifest& m) { m.project.scene = readSceneObject(f, {}); }},
@@ -90,6 +120,8 @@ const Key<Manifest> manifestKeys[] = {
          m.history = readList<HistoryRef>(f, 0, qsizetype(kMaxHistory), [](const Field& item) { return readAs(item, historyKeys); });
      }},
     {u"history_index"_s, true, [](const Field& f, Manifest& m) { m.project.historyIndex = int(f.integer(0, kMaxHistory)); }},
+    {u"origin"_s, false, [](const Field& f, Manifest& m) { m.origin = stateIndex(f); }},
+    {u"drives"_s, false, [](const Field& f, Manifest& m) { m.drives = readDrives(f); }},
     {u"states"_s, true, [](const Field& f, Manifest& m) {
          // Two per history entry and the current one at most: each is stored once.
          m.states = readList<BlobRef>(f, 1, qsizetype(2 * kMaxHistory + 1), [](const Field& item) { return readAs(item, blobKeys); });
@@ -110,13 +142,23 @@ void checkReferences(const Manifest& m)
         used[std::size_t(index)] = true;
     };
     use(m.state, top.key(u"state"_s));
+    use(m.origin, top.key(u"origin"_s));
+    for (std::size_t i = 0; i < m.reached.size(); ++i) {
+        if (!m.reached[i])
+            continue;
+        const KeyPath where = top.key(u"states"_s).index(qsizetype(i)).key(u"reached"_s).key(u"from"_s);
+        if (m.reached[i]->from >= stateCount)
+            where.fail(u"state %1 does not exist (\"states\" lists %2)"_s.arg(m.reached[i]->from).arg(stateCount));
+        if (m.reached[i]->from == qint64(i))
+            where.fail(u"a state cannot be reached from itself"_s);
+    }
     for (std::size_t i = 0; i < m.history.size(); ++i) {
         use(m.history[i].before, top.key(u"history"_s).index(qsizetype(i)).key(u"before"_s));
         use(m.history[i].after, top.key(u"history"_s).index(qsizetype(i)).key(u"after"_s));
     }
     for (std::size_t i = 0; i < used.size(); ++i) {
         if (!used[i])
-            top.key(u"states"_s).index(qsizetype(i)).fail(u"no history entry and not the current state refers to it"_s);
+            top.key(u"states"_s).index(qsizetype(i)).fail(u"no history entry, not the current state and not the origin refers to it"_s);
     }
     if (std::size_t(m.project.historyIndex) > m.history.size())
         top.key(u"history_index"_s).fail(u"%1 is past the %2 history entries"_s.arg(m.project.historyIndex).arg(m.history.size()));
@@ -181,17 +223,70 @@ std::vector<std::shared_ptr<const sim::SimulationState>> readStates(const Manife
     return states;
 }
 
+// Where each state was taken in a journal made again from the file: a state reached from another
+// continues that one's line (a segment of its entries after the other's head), any other starts a
+// line of its own. Those a state is reached from are made first; a cycle is an error.
+std::vector<JournalMark> journalMarks(const Manifest& m)
+{
+    const std::size_t n = m.reached.size();
+    std::vector<JournalMark> marks(n);
+    enum class Progress : char { NotYet, Waiting, Done };
+    std::vector<Progress> progress(n, Progress::NotYet);
+    for (std::size_t first = 0; first < n; ++first) {
+        std::vector<std::size_t> pending{first};  // each reached from the one above it
+        while (!pending.empty()) {
+            const std::size_t i = pending.back();
+            if (progress[i] == Progress::Done) {
+                pending.pop_back();
+                continue;
+            }
+            const std::optional<Reached>& reached = m.reached[i];
+            if (!reached) {
+                marks[i] = {std::make_shared<const JournalSegment>(), 0};
+            } else if (const auto from = std::size_t(reached->from); progress[from] != Progress::Done) {
+                const KeyPath where = KeyPath().key(u"states"_s).index(qsizetype(i)).key(u"reached"_s).key(u"from"_s);
+                if (progress[from] == Progress::Waiting)
+                    where.fail(u"state %1 is reached, through others, from this one"_s.arg(from));
+                progress[i] = Progress::Waiting;
+                pending.push_back(from);
+                continue;
+            } else {
+                const JournalMark& start = marks[from];
+                if (reached->steps > kMaxJsonInteger - start.step)
+                    KeyPath().key(u"states"_s).index(qsizetype(i)).key(u"reached"_s).key(u"steps"_s)
+                        .fail(u"the states it is reached through take more than %1 steps"_s.arg(kMaxJsonInteger));
+                std::vector<JournalEntry> entries = reached->entries;
+                for (JournalEntry& e : entries)
+                    e.step += start.step;
+                marks[i] = {std::make_shared<const JournalSegment>(JournalSegment{std::move(entries), start.head}),
+                            start.step + reached->steps};
+            }
+            progress[i] = Progress::Done;
+            pending.pop_back();
+        }
+    }
+    return marks;
+}
+
 Project assemble(Manifest& m, QByteArrayView data, StateEncoding encoding)
 {
     const std::vector<std::shared_ptr<const sim::SimulationState>> states = readStates(m, data, encoding);
     auto shared = [&states](qint64 index) { return index == kNoState ? nullptr : states[std::size_t(index)]; };
 
+    const std::vector<JournalMark> marks = journalMarks(m);
+    auto markOf = [&marks](qint64 index) { return index == kNoState ? JournalMark{} : marks[std::size_t(index)]; };
+
     Project project = std::move(m.project);
     project.state = *states[std::size_t(m.state)];
+    project.stateMark = markOf(m.state);
+    project.origin = shared(m.origin);
+    project.originMark = markOf(m.origin);
     project.history.reserve(m.history.size());
     for (HistoryRef& ref : m.history) {
         ref.entry.before = shared(ref.before);
         ref.entry.after = shared(ref.after);
+        ref.entry.beforeMark = markOf(ref.before);
+        ref.entry.afterMark = markOf(ref.after);
         project.history.push_back(std::move(ref.entry));
     }
     checkRegionTables(project);
@@ -244,6 +339,7 @@ Manifest readManifest(QByteArrayView text)
         throw ReadError{u"manifest"_s, u"must be a JSON object {…}"_s};
     Manifest manifest;
     readObject(Field(document.object(), KeyPath()), manifest, std::span<const Key<Manifest>>(manifestKeys));
+    readJournals(manifest);
     checkReferences(manifest);
     return manifest;
 }

@@ -17,7 +17,7 @@ using StatePtr = std::shared_ptr<const sim::SimulationState>;
 class StateSlot {
 public:
     StateSlot() = default;
-    explicit StateSlot(StatePtr state) : m_state(std::move(state)) {}
+    explicit StateSlot(StatePtr state, JournalMark mark = {}) : m_state(std::move(state)), m_mark(std::move(mark)) {}
 
     // `mark`: where the state was taken in the journal of the live simulation (model/Journal.h).
     void fill(StatePtr state, JournalMark mark = {})

@@ -820,7 +820,7 @@ void TestCli::helpOnEveryCommand_data()
                               QStringLiteral("vectorfluid devices"), QStringLiteral("--version")};
     const QStringList render{QStringLiteral("vectorfluid render SCENE"), QStringLiteral("--check-topology <K>"),
                              QStringLiteral("--polyline"), QStringLiteral("beside it")};
-    const QStringList animate{QStringLiteral("usage: vectorfluid animate SCENE (--out FILE | --frames DIR"), QStringLiteral("--fps <N>"),
+    const QStringList animate{QStringLiteral("usage: vectorfluid animate SCENE|PROJECT (--out FILE | --frames DIR"), QStringLiteral("--fps <N>"),
                               QStringLiteral("--transparent"), QStringLiteral("Lottie")};
     const QStringList devices{QStringLiteral("usage: vectorfluid devices"), QStringLiteral("--help")};
     for (const QString& help : {QStringLiteral("--help"), QStringLiteral("-h")}) {

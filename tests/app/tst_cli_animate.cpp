@@ -1,7 +1,9 @@
-// `vectorfluid animate`: the frames of a time range written as Lottie, animated SVG or video, with the
-// command line's conventions: one line on stderr and exit 2 for bad input, nothing written then,
-// a file that was there before left as it was.
+// `vectorfluid animate`: the frames of a time range written as Lottie, animated SVG or video, of a
+// scene or of a project's history played again, with the command line's conventions: one line on
+// stderr and exit 2 for bad input, nothing written then, a file that was there before left as it was.
 #include "CliRun.h"
+#include "../LiveSession.h"
+#include "model/ProjectFile.h"
 
 #include <QFile>
 #include <QImage>
@@ -40,6 +42,8 @@ private slots:
     void pdfPagesAndFrames();
     void badInputWritesNothing_data();
     void badInputWritesNothing();
+    void historyOfAProject();
+    void projectWithoutItsJournal();
     void videoWithoutFfmpeg();
     void vertexLimitWritesNothing();
 
@@ -166,6 +170,44 @@ void TestCliAnimate::badInputWritesNothing()
         QCOMPARE(file.readAll(), QByteArray("before"));
     }
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 3);
+}
+
+// A project's history, played again: from where the work was opened, a frame a step, through the
+// command (a drop and a pen) to now; its layers are the regions of each span.
+void TestCliAnimate::historyOfAProject()
+{
+    Live live(water());
+    const Live::Kept origin = live.keep();
+    live.step();
+    const Live::Kept before = live.keep();
+    live.drop({0.7, 0.5}, 0.08);
+    for (int k = 0; k < 4; ++k)
+        live.step({pen(0.2 + 0.05 * k, 0.25 + 0.05 * k)});
+    const Live::Kept after = live.keep();
+    live.step();
+    const QString project = m_dir.filePath(QStringLiteral("played.vfproj"));
+    QCOMPARE(model::writeProjectFile(live.project(origin, before, after, live.keep()), project), QString());
+
+    const QString out = m_dir.filePath(QStringLiteral("history.json"));
+    const CliResult r = runCli({QStringLiteral("animate"), project, QStringLiteral("--out"), out, QStringLiteral("--fps"),
+                                QStringLiteral("100"), QStringLiteral("--backend"), QStringLiteral("reference")});
+    QVERIFY2(r.exitCode == 0 && r.err.isEmpty(), qPrintable(describe(r)));
+    const QJsonObject lottie = readJson(out);
+    QCOMPARE(lottie[QLatin1String("op")].toInt(), 6);  // the whole history: six steps of 0.01 s
+    QStringList layers;
+    for (const QJsonValue& layer : lottie[QLatin1String("layers")].toArray())
+        layers << layer[QLatin1String("nm")].toString();
+    QCOMPARE(layers, (QStringList{QStringLiteral("ink 1"), QStringLiteral("ink 0"), QStringLiteral("Background")}));
+}
+
+// A project saved before projects kept their journal has nothing to play: one line, exit 2.
+void TestCliAnimate::projectWithoutItsJournal()
+{
+    const QString out = m_dir.filePath(QStringLiteral("old.json"));
+    const CliResult r = runCli({QStringLiteral("animate"), QStringLiteral(VF_TEST_DATA "/projects/fluid.vfproj"),
+                                QStringLiteral("--out"), out});
+    CHECK_OK(checkOneLineError(r, {QStringLiteral("fluid.vfproj: its history holds no step that can be played again")}));
+    QVERIFY(!QFile::exists(out));
 }
 
 // Video needs the ffmpeg program: without it on PATH, one line says so at once and nothing is written.

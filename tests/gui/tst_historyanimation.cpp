@@ -2,11 +2,13 @@
 // and a stroke dragged on the canvas, with single steps (the . key) before, between and after, are
 // played again at the steps they came. The replay takes as many steps as the document did since it
 // was opened and ends in the live state exactly (both run the reference backend, which is
-// deterministic), and the Lottie file the dialog writes has a frame per step.
+// deterministic), and the Lottie file the dialog writes has a frame per step. Saved and opened
+// again, the project plays its history from the first opening on, through what was done after.
 #include "FindChild.h"
 #include "WindowTest.h"
 #include "app/AnimationDialog.h"
 #include "app/MainWindow.h"
+#include "model/ProjectFile.h"
 #include "model/SceneFile.h"
 
 #include <QComboBox>
@@ -24,6 +26,16 @@
 
 using namespace vf;
 using namespace vf::app;
+
+// The window shown with `path` open and paused; any report fails the test.
+bool showPaused(MainWindow& w, const QString& path)
+{
+    w.setReport([](const QString&, const QString& text) { QFAIL(qPrintable(text)); });
+    if (!test::showActive(w) || !w.openFile(path))
+        return false;
+    w.simulation().setPlaying(false);
+    return true;
+}
 
 class TestHistoryAnimation : public QObject {
     Q_OBJECT
@@ -45,10 +57,7 @@ private slots:
     void historyIsPlayedAgainAsItWasMade()
     {
         MainWindow w;
-        w.setReport([](const QString&, const QString& text) { QFAIL(qPrintable(text)); });
-        QVERIFY(test::showActive(w));
-        QVERIFY(w.openFile(m_scenePath));
-        w.simulation().setPlaying(false);
+        QVERIFY(showPaused(w, m_scenePath));
         Canvas& canvas = w.canvas();
         const auto at = [&canvas](double x, double y) { return canvas.mapFromCanvas({x, y}).toPoint(); };
 
@@ -106,6 +115,46 @@ private slots:
         QVERIFY2(layers.contains(QStringLiteral("ink")) && layers.filter(QStringLiteral("drop")).size() == 1,
                  qPrintable(layers.join(u", ")));  // the scene's ink and the drop
         w.document().undoStack().setClean();  // no prompt on close
+    }
+
+    // The journal goes into the project file: a drop before saving and one after opening it again,
+    // with steps around both, play again from the scene's opening to now, ending in the live state.
+    void historyPlaysAgainAfterTheProjectIsOpened()
+    {
+        MainWindow w;
+        QVERIFY(showPaused(w, m_scenePath));
+        Canvas& canvas = w.canvas();
+        const auto dropAt = [&](double x, double y) {
+            QTest::keyClick(&w, Qt::Key_D);
+            QTest::mouseClick(&canvas, Qt::LeftButton, {}, canvas.mapFromCanvas({x, y}).toPoint());
+        };
+        QTest::keyClick(&w, Qt::Key_Period);
+        dropAt(0.25, 0.3);
+        QTest::keyClick(&w, Qt::Key_Period);
+        QTest::keyClick(&w, Qt::Key_Period);
+        const QString project = m_dir.filePath(QStringLiteral("two drops.vfproj"));
+        QCOMPARE(model::writeProjectFile(w.document().draftProject().finish(), project), QString());
+
+        QVERIFY(showPaused(w, project));
+        QTest::keyClick(&w, Qt::Key_Period);
+        dropAt(0.7, 0.7);
+        QTest::keyClick(&w, Qt::Key_Period);
+        w.simulation().sync();
+
+        const model::ProjectDraft draft = w.document().draftProject();
+        int unrecorded = -1;
+        const std::vector<model::ReplaySpan> spans = draft.replaySpans(&unrecorded);
+        QCOMPARE(unrecorded, 0);
+        std::int64_t steps = 0;
+        for (const model::ReplaySpan& span : spans)
+            steps += span.steps;
+        QCOMPARE(steps, std::int64_t(5));  // three before saving, two after opening
+        model::HistoryReplay replay(draft.scene(), spans);
+        for (std::int64_t k = 0; k < steps; ++k)
+            replay.step();
+        QCOMPARE(replay.simulation().regionCount(), 3);
+        QVERIFY(replay.simulation().snapshot() == draft.finish().state);
+        w.document().undoStack().setClean();
     }
 
 private:

@@ -2,104 +2,23 @@
 // inputs between two states of one line of work and nothing across lines; a replay given the
 // inputs a live simulation had, at the steps it had them, ends in that simulation's state exactly
 // (the reference backend is deterministic), over one span or two, through a change of settings;
-// and past its end the picture holds.
+// and past its end the picture holds. A project file keeps the journal: the history read back from
+// it plays again to the same end.
+#include "../LiveSession.h"
 #include "model/HistoryReplay.h"
-#include "model/RegionRemoval.h"
+#include "model/ProjectFile.h"
 
 #include <QTest>
 
 using namespace vf;
 using namespace vf::model;
+using namespace vf::test;
 
 namespace {
-
-Scene water()
-{
-    Scene scene;
-    scene.flow.gridX = scene.flow.gridY = 32;
-    scene.flow.viscosity = 0.001;
-    scene.time.dt = 0.01;
-    scene.tracking.maxSpacing = 0.01;
-    return scene;
-}
 
 std::shared_ptr<const JournalSegment> segment(std::vector<JournalEntry> entries, std::shared_ptr<const JournalSegment> previous)
 {
     return std::make_shared<const JournalSegment>(JournalSegment{std::move(entries), std::move(previous)});
-}
-
-EngineSettings settingsOf(const Scene& scene)
-{
-    return {scene.flow, scene.tracking, QStringLiteral("reference"), -1};
-}
-
-// A live session, as the app's worker drives it: what it does at which step, recorded as the
-// worker records it, and done to a simulation of its own.
-class Live {
-public:
-    explicit Live(const Scene& scene) : m_scene(scene), m_script(scene), m_simulation(sim::makeReferenceSimulation(simulationSettings(scene)))
-    {
-        m_simulation->addRegion({sim::circle({0.4, 0.5}, 0.12, 0.01)});
-    }
-
-    sim::Simulation& simulation() { return *m_simulation; }
-    std::int64_t steps() const { return m_steps; }
-    const std::vector<JournalEntry>& entries() const { return m_entries; }
-
-    void drop(sim::Vec2 centre, double radius)
-    {
-        m_entries.push_back({m_steps, journal::Drop{centre, radius}});
-        m_simulation->drop(centre, radius);
-    }
-    void map(const sim::ExactMap& map)
-    {
-        m_entries.push_back({m_steps, journal::Map{std::make_shared<const sim::ExactMap>(map)}});
-        m_simulation->applyMap(map);
-    }
-    void removeRegion(int region)
-    {
-        m_entries.push_back({m_steps, journal::RemoveRegion{region}});
-        m_simulation->restore(withoutRegion(m_simulation->snapshot(), region));
-    }
-    void configure(const EngineSettings& settings)
-    {
-        m_entries.push_back({m_steps, journal::Configure{std::make_shared<const EngineSettings>(settings)}});
-        Scene scene = m_scene;
-        scene.flow = settings.flow;
-        scene.tracking = settings.tracking;
-        const sim::SimulationState state = m_simulation->snapshot();
-        m_simulation = sim::makeReferenceSimulation(simulationSettings(scene));
-        m_simulation->restore(state);
-    }
-    void step(const std::vector<sim::StylusSegment>& pens = {}, const std::shared_ptr<const sim::TargetDrive>& drive = {})
-    {
-        if (drive)
-            m_entries.push_back({m_steps, journal::Drive{drive}});
-        for (const sim::StylusSegment& pen : pens)
-            m_entries.push_back({m_steps, journal::Pen{pen}});
-        m_script.step(*m_simulation, m_simulation->time(), m_scene.time.dt, {drive.get(), pens});
-        ++m_steps;
-    }
-
-private:
-    Scene m_scene;
-    SceneScript m_script;
-    std::unique_ptr<sim::Simulation> m_simulation;
-    std::vector<JournalEntry> m_entries;
-    std::int64_t m_steps = 0;
-};
-
-sim::StylusSegment pen(double x0, double x1)
-{
-    return {{x0, 0.5}, {x1, 0.5}, 0.05, 0.01};
-}
-
-RegionTable looks(int regions)
-{
-    RegionTable table;
-    for (int r = 0; r < regions; ++r)
-        table.push_back({QStringLiteral("ink %1").arg(r), QColor(40 * r, 80, 120), true, r});
-    return table;
 }
 
 // Everything `live` did after `from` (its state then, and its entries and steps then), as a span.
@@ -217,6 +136,65 @@ private slots:
         QCOMPARE(replay.stepsDone(), std::int64_t(3));
         QVERIFY(replay.simulation().snapshot() == last);
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, HistoryReplay(scene, {}));
+    }
+
+    // Every kind of entry, written into a project file and read back: the spans from the origin
+    // through the command to now are those written, and played again they end in the live state.
+    void projectFileKeepsTheJournal()
+    {
+        const Scene scene = water();
+        Live live(scene);
+        live.step({pen(0.2, 0.25)});
+        const Live::Kept origin = live.keep();
+        live.drop({0.7, 0.5}, 0.08);
+        live.step({pen(0.25, 0.3)});
+        const Live::Kept before = live.keep();
+        live.map(sim::Comb{{0.5, 0.2}, {0.5, 0.4}, 2, 0.2, 0.05, 0.03, 0.3, 0.5});
+        live.map(sim::CircularComb{{0.5, 0.5}, 0.1, 2, 0.05, 0.02, 0.4});
+        live.map(sim::Swirl{{0.4, 0.5}, 0.2, -0.7});
+        live.addRegion({sim::circle({0.2, 0.2}, 0.05, 0.01), sim::circle({0.2, 0.2}, 0.02, 0.01)});
+        live.removeRegion(1);
+        const auto drive = std::make_shared<const sim::TargetDrive>(
+            std::vector<std::vector<sim::Polygon>>{{sim::circle({0.5, 0.5}, 0.2, 0.01)}, {sim::circle({0.1, 0.1}, 0.05, 0.01)}},
+            simulationSettings(scene).fluid, sim::TargetDriveSettings{300, 4, 0.02, 2});
+        for (int k = 0; k < 3; ++k)
+            live.step({pen(0.3, 0.32), pen(0.6, 0.58)}, drive);
+        const Live::Kept after = live.keep();
+        EngineSettings thicker = settingsOf(scene);
+        thicker.flow.viscosity = 0.05;
+        thicker.tracking.maxSpacing = 0.008;
+        live.configure(thicker);
+        live.step();
+        live.step({pen(0.35, 0.4)});
+        const Live::Kept now = live.keep();
+
+        const Project written = live.project(origin, before, after, now);
+        const ProjectReadResult read = parseProject(projectToBytes(written), u"journal.vfproj"_qs);
+        QVERIFY2(read.ok(), qPrintable(read.error));
+        int unrecorded = -1;
+        const std::vector<ReplaySpan> spans = replaySpans(read.project, &unrecorded);
+        QCOMPARE(unrecorded, 0);
+        const std::vector<ReplaySpan> expected = replaySpans(written);
+        QCOMPARE(spans.size(), std::size_t(3));  // origin to the command, the command, to now
+        QCOMPARE(spans.size(), expected.size());
+        for (std::size_t k = 0; k < spans.size(); ++k) {
+            QCOMPARE(spans[k].steps, expected[k].steps);
+            QCOMPARE(spans[k].entries.size(), expected[k].entries.size());
+            QVERIFY(*spans[k].start == *expected[k].start);
+        }
+        const auto& drop = std::get<journal::Drop>(spans[0].entries.front().action);
+        QCOMPARE(drop.center, sim::Vec2(0.7, 0.5));
+        const auto& comb = std::get<sim::Comb>(*std::get<journal::Map>(spans[1].entries.front().action).map);
+        QCOMPARE(comb.phase, 0.5);
+        const auto& read3 = std::get<journal::Drive>(spans[1].entries[5].action).drive;
+        QCOMPARE(read3->target().size(), std::size_t(2));
+        QCOMPARE(read3->settings(), drive->settings());
+
+        HistoryReplay replay(scene, spans);
+        QCOMPARE(replay.duration(), double(now.steps - origin.steps) * scene.time.dt);
+        for (std::int64_t k = origin.steps; k < now.steps; ++k)
+            replay.step();
+        QVERIFY(replay.simulation().snapshot() == *now.state);
     }
 };
 

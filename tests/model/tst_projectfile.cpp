@@ -130,10 +130,10 @@ Project fluidProject()
     p.state = *s2;
     p.steps = 375;
     p.history = {
-        {u"Drop"_s, table({ink}), table({ink, sun}), s0, s1, {}, {}, {}, {}},
-        {u"Recolour “sün”"_s, table({ink, sun}), table({ink, sunRed}), nullptr, nullptr, {}, {}, {}, {}},
-        {u"Stroke"_s, table({ink, sunRed}), table({sun, ink}), s1, s2, {}, {}, {}, {}},
-        {u"Stroke"_s, table({sun, ink}), table({sun, ink}), s2, s3, {}, {}, {}, {}},
+        {u"Drop"_s, table({ink}), table({ink, sun}), s0, s1, {}, {}, {}, {}, {}, {}},
+        {u"Recolour “sün”"_s, table({ink, sun}), table({ink, sunRed}), nullptr, nullptr, {}, {}, {}, {}, {}, {}},
+        {u"Stroke"_s, table({ink, sunRed}), table({sun, ink}), s1, s2, {}, {}, {}, {}, {}, {}},
+        {u"Stroke"_s, table({sun, ink}), table({sun, ink}), s2, s3, {}, {}, {}, {}, {}, {}},
     };
     // The last stroke came after a switch to shape design and a finer spacing.
     p.history[3].flowBefore.viscosity = p.history[3].flowAfter.viscosity = shapeDesignPreset.viscosity;
@@ -421,7 +421,7 @@ private slots:
     {
         const Project written = fluidProject();
         const QByteArray current = projectToBytes(written);
-        QVERIFY(current.startsWith("VFPROJ 2\n"));
+        QVERIFY(current.startsWith("VFPROJ 3\n"));
         const ProjectReadResult read = parseProject(asVersion1(current), u"old.vfproj"_s);
         QVERIFY2(read.ok(), qPrintable(read.error));
         verifySameProject(read.project, written);
@@ -545,8 +545,8 @@ private slots:
         row("empty", bytes([](const QByteArray&) { return QByteArray(); }), u"header: not a vectorfluid project"_s);
         row("a scene file", bytes([](const QByteArray&) { return QByteArray("{\"vectorfluid\": 1}"); }),
             u"header: not a vectorfluid project (it does not start with \"VFPROJ\")"_s);
-        row("newer version", bytes([](QByteArray b) { return b.replace(0, 9, "VFPROJ 3\n"); }),
-            u"header: version 3 is not supported (this program reads versions 1 to 2)"_s);
+        row("newer version", bytes([](QByteArray b) { return b.replace(0, 9, "VFPROJ 4\n"); }),
+            u"header: version 4 is not supported (this program reads versions 1 to 3)"_s);
         row("version 0", bytes([](QByteArray b) { return b.replace(0, 9, "VFPROJ 0\n"); }),
             u"header: version 0 is not supported"_s);
         row("no version", bytes([](QByteArray b) { return b.replace(0, 9, "VFPROJ x\n"); }), u"header: the first line has no version number"_s);
@@ -583,7 +583,40 @@ private slots:
         row("state index", setManifest(u"history/3/after"_s, 9), u"history[3].after: state 9 does not exist (\"states\" lists 4)"_s);
         row("state index as text", setManifest(u"state"_s, u"2"_s), u"state: must be a number, not the string \"2\""_s);
         row("unused state", setManifest(u"history/3/after"_s, QJsonValue::Null),
-            u"states[3]: no history entry and not the current state refers to it"_s);
+            u"states[3]: no history entry, not the current state and not the origin refers to it"_s);
+        const auto reached = [](qint64 from, qint64 steps, const QJsonArray& entries) {
+            return QJsonObject{{u"from"_s, from}, {u"steps"_s, steps}, {u"entries"_s, entries}};
+        };
+        const auto entry = [](const QJsonArray& values) { return QJsonArray{values}; };
+        row("reached from itself", setManifest(u"states/1/reached"_s, reached(1, 0, {})),
+            u"states[1].reached.from: a state cannot be reached from itself"_s);
+        row("reached from no state", setManifest(u"states/1/reached"_s, reached(7, 0, {})),
+            u"states[1].reached.from: state 7 does not exist (\"states\" lists 4)"_s);
+        row("reached in a cycle", bytes([reached](const QByteArray& good) {
+                FileParts parts = partsOf(good);
+                parts.manifest = setAt(parts.manifest, {u"states"_s, u"0"_s, u"reached"_s}, reached(1, 1, {})).toObject();
+                parts.manifest = setAt(parts.manifest, {u"states"_s, u"1"_s, u"reached"_s}, reached(0, 1, {})).toObject();
+                return fileOf(parts);
+            }),
+            u"states[1].reached.from: state 0 is reached, through others, from this one"_s);
+        row("journal entry past its steps", setManifest(u"states/1/reached"_s, reached(0, 2, entry({3, u"drop"_s, 0.5, 0.5, 0.1}))),
+            u"states[1].reached.entries[0][0]: must be in [0, 2], is 3"_s);
+        row("journal entries out of order",
+            setManifest(u"states/1/reached"_s, reached(0, 2, {QJsonArray{1, u"remove"_s, 0}, QJsonArray{0, u"remove"_s, 0}})),
+            u"states[1].reached.entries[1][0]: must be in [1, 2], is 0"_s);
+        row("journal entry kind", setManifest(u"states/1/reached"_s, reached(0, 2, entry({0, u"splash"_s}))),
+            u"states[1].reached.entries[0][1]: must be one of \"drop\", \"pen\""_s);
+        row("journal entry values", setManifest(u"states/1/reached"_s, reached(0, 2, entry({0, u"drop"_s, 0.5}))),
+            u"states[1].reached.entries[0]: a \"drop\" entry has 1 values after its step and kind, not 3"_s);
+        row("journal comb sharpness", setManifest(u"states/1/reached"_s,
+                                                  reached(0, 2, entry({0, u"comb"_s, 0, 0, 1, 0, 2, 0.1, 0, 0, 1, 0}))),
+            u"states[1].reached.entries[0][8]: must be positive"_s);
+        row("journal drive without drives", setManifest(u"states/1/reached"_s, reached(0, 2, entry({0, u"drive"_s, 0}))),
+            u"states[1].reached.entries[0][2]: names a drive, but the project lists none in \"drives\""_s);
+        row("drive covering nothing", setManifest(u"drives"_s, QJsonArray{QJsonObject{
+                {u"target"_s, QJsonArray{QJsonArray{QJsonArray{5, 5, 5.1, 5, 5, 5.1}}}}, {u"cells"_s, QJsonArray{8, 8}},
+                {u"width"_s, 1}, {u"height"_s, 1}, {u"strength"_s, 1}, {u"attenuation"_s, 1}, {u"blur"_s, 0.1}, {u"gathering"_s, 0}}}),
+            u"drives[0]: target drive: the target covers none of the canvas"_s);
         row("blob past the end", setManifest(u"states/1/offset"_s, 1e9), u"states[1]: its bytes [1000000000,"_s);
         row("blob length past the end", setManifest(u"states/0/length"_s, 1e15), u"states[0]: its bytes [0, 1000000000000000)"_s);
         row("raw length disagrees", setManifest(u"states/0/raw_length"_s, 7),
