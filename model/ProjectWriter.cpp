@@ -167,7 +167,8 @@ EncodedProject encodeProject(const Project& project)
                                {u"origin"_s, origin},
                                {u"drives"_s, drives.toJson()},
                                {u"states"_s, states}};
-    const QByteArray json = QJsonDocument(manifest).toJson(QJsonDocument::Indented);
+    // Compact: the journal is mostly short arrays of numbers, which indenting would triple.
+    const QByteArray json = QJsonDocument(manifest).toJson(QJsonDocument::Compact);
     encoded.head = kMagic.toByteArray() + QByteArray::number(kVersion) + '\n';
     const quint64 length = qToLittleEndian(quint64(json.size()));
     encoded.head.append(reinterpret_cast<const char*>(&length), sizeof length);
