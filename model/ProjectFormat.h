@@ -12,8 +12,9 @@
 namespace vf::model::projectformat {
 
 // The first line: the magic word, a space, the version, a newline. Version 3 adds the journal
-// between the states ("origin", "drives", each state's "reached"); versions 2 and 3 pack the
-// states' arrays (StateEncoding::Packed) and deflate them; version 1 stored them plain. All read.
+// between the states ("origin", "drives", each state's "reached") and predicts the states' packed
+// arrays linearly (StateEncoding::PackedLinear); version 2 packed them from the value before
+// (Packed); both deflate them; version 1 stored them plain. All read.
 inline constexpr QByteArrayView kMagic = "VFPROJ ";
 inline constexpr int kVersion = 3;
 inline constexpr int kOldestVersion = 1;
@@ -21,7 +22,10 @@ inline constexpr qsizetype kMaxHeaderLine = 32;
 // After the header line: the manifest's length in bytes, unsigned 64-bit little-endian.
 inline constexpr qsizetype kLengthBytes = 8;
 
-inline StateEncoding stateEncoding(int version) { return version == 1 ? StateEncoding::Plain : StateEncoding::Packed; }
+inline StateEncoding stateEncoding(int version)
+{
+    return version == 1 ? StateEncoding::Plain : version == 2 ? StateEncoding::Packed : StateEncoding::PackedLinear;
+}
 
 // qCompress stores the uncompressed length in 32 bits.
 inline constexpr std::int64_t kMaxRawBlob = 0xffffffffLL;

@@ -23,8 +23,11 @@ std::span<const double> flat(const std::vector<sim::Vec2>& points)
     return {reinterpret_cast<const double*>(points.data()), 2 * points.size()};
 }
 
-// A packed array (StateEncoding::Packed) stores each value's 64 bits as the difference from a
-// prediction of them: the value `stride` places before, or, with a reference array, the same place
+// A packed array (StateEncoding::Packed, PackedLinear) stores each value's 64 bits as the difference
+// from a prediction of them: the value `stride` places before (Packed), or where the line through
+// the two values `stride` and 2·`stride` places before goes on (PackedLinear: a contour's points
+// and spacings and a grid's values are smooth, so their second differences are smaller than their
+// first; in the bits, which is exact), or, with a reference array, the same place
 // there moved as the value `stride` places before moved from its own (a previous position is its
 // position displaced as the vertex before was: the flow is smooth along a contour). The first
 // `stride` values without a reference, with nothing before them, are stored as they are. Neighbouring vertices and grid cells are close, so the
@@ -36,6 +39,7 @@ std::span<const double> flat(const std::vector<sim::Vec2>& points)
 struct Prediction {
     std::size_t stride = 1;             // from the value this many places before, at least 1
     std::span<const double> reference;  // where given: from the same place here, moved likewise
+    bool linear = false;                // without a reference: on the line through two values before
 };
 
 constexpr Prediction kPointPrediction{2, {}};  // x from the previous x, y from the previous y
@@ -50,11 +54,19 @@ std::uint64_t unzigzag(std::uint64_t z) { return (z >> 1) ^ (0 - (z & 1)); }
 std::uint64_t predicted(const double* values, std::size_t i, const Prediction& prediction)
 {
     const std::size_t before = i - prediction.stride;  // wraps for the first values; not read then
+    if (prediction.reference.empty() && prediction.linear && i >= 2 * prediction.stride)
+        return 2 * bitsOf(values[before]) - bitsOf(values[before - prediction.stride]);
     if (prediction.reference.empty())
         return bitsOf(values[before]);
     // In the bits, wrapping: exact and the same on every machine, unlike arithmetic on doubles.
     const std::uint64_t moved = i >= prediction.stride ? bitsOf(values[before]) - bitsOf(prediction.reference[before]) : 0;
     return bitsOf(prediction.reference[i]) + moved;
+}
+
+Prediction withEncoding(Prediction prediction, StateEncoding encoding)
+{
+    prediction.linear = encoding == StateEncoding::PackedLinear;
+    return prediction;
 }
 
 // How many values at the start are stored as they are.
@@ -130,10 +142,10 @@ public:
 private:
     void raw(std::span<const double> values, const Prediction& prediction)
     {
-        if (m_encoding == StateEncoding::Packed) {
+        if (m_encoding != StateEncoding::Plain) {
             for (double value : values.first(headOf(values.size(), prediction)))
                 number(value);
-            appendPacked(m_out, values, prediction);
+            appendPacked(m_out, values, withEncoding(prediction, m_encoding));
         } else if constexpr (std::endian::native == std::endian::little) {
             m_out.append(reinterpret_cast<const char*>(values.data()), qsizetype(values.size_bytes()));
         } else {
@@ -200,11 +212,11 @@ private:
         return data;
     }
     // The fewest bytes a value of an array takes.
-    std::size_t valueBytes() const { return m_encoding == StateEncoding::Packed ? 1 : sizeof(double); }
+    std::size_t valueBytes() const { return m_encoding == StateEncoding::Plain ? sizeof(double) : 1; }
     void read(double* out, std::size_t n, const char* what, const Prediction& prediction)
     {
-        if (m_encoding == StateEncoding::Packed) {
-            readPacked(out, n, what, prediction);
+        if (m_encoding != StateEncoding::Plain) {
+            readPacked(out, n, what, withEncoding(prediction, m_encoding));
             return;
         }
         const char* data = take(n * sizeof(double), what);

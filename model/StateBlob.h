@@ -11,9 +11,10 @@
 namespace vf::model {
 
 // How the arrays of doubles are laid out (docs/project-format.md, "State blobs"): as they are
-// (project version 1), or each value XORed with a prediction and split into byte planes (version
-// 2), the same size but far more compressible.
-enum class StateEncoding { Plain, Packed };
+// (project version 1), or each value less a prediction and split into byte planes, the same size
+// but far more compressible: predicted from the value before (version 2) or on the line through
+// the two before (version 3).
+enum class StateEncoding { Plain, Packed, PackedLinear };
 
 QByteArray encodeState(const sim::SimulationState& state, StateEncoding encoding);
 

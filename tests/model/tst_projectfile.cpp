@@ -4,6 +4,7 @@
 // One file past 500 lines: each kind of broken file is a case, made by the corrupting helpers below.
 #include "model/EngineSettings.h"
 #include "model/ProjectFile.h"
+#include "model/ProjectFormat.h"
 #include "model/StateBlob.h"
 
 #include "../TestFiles.h"
@@ -295,13 +296,15 @@ QByteArray reencodeStates(const QByteArray& file, const QByteArray& header,
     return fileOf(parts);
 }
 
-// A written project as version 1 wrote it: the same manifest, the states' arrays plain.
-QByteArray asVersion1(const QByteArray& file)
+// A written project with its states laid out as an older version did (version 1 plain, version 2
+// packed from the value before): the same manifest.
+QByteArray asVersion(const QByteArray& file, int version)
 {
-    return reencodeStates(file, "VFPROJ 1\n", [](qsizetype, const QByteArray& packed) {
-        return encodeState(decodeState(packed, StateEncoding::Packed, json::KeyPath()), StateEncoding::Plain);
+    return reencodeStates(file, "VFPROJ " + QByteArray::number(version) + '\n', [version](qsizetype, const QByteArray& packed) {
+        return encodeState(decodeState(packed, StateEncoding::PackedLinear, json::KeyPath()), projectformat::stateEncoding(version));
     });
 }
+QByteArray asVersion1(const QByteArray& file) { return asVersion(file, 1); }
 
 // Replaces state 0's blob by `edit` of its encoded bytes: plain in a version 1 file (whose layout
 // the edits poke at), or packed as written.
@@ -416,15 +419,19 @@ private slots:
         verifySameProject(read.project, written);
     }
 
-    // Projects written before the states were packed read the same.
-    void version1ProjectsRead()
+    // Projects written before the states were packed, or packed from the value before, read the same.
+    void olderVersionsRead()
     {
         const Project written = fluidProject();
         const QByteArray current = projectToBytes(written);
         QVERIFY(current.startsWith("VFPROJ 3\n"));
-        const ProjectReadResult read = parseProject(asVersion1(current), u"old.vfproj"_s);
-        QVERIFY2(read.ok(), qPrintable(read.error));
-        verifySameProject(read.project, written);
+        for (int version : {1, 2}) {
+            const QByteArray old = asVersion(current, version);
+            QVERIFY(old != current);
+            const ProjectReadResult read = parseProject(old, u"old.vfproj"_s);
+            QVERIFY2(read.ok(), qPrintable(read.error));
+            verifySameProject(read.project, written);
+        }
     }
 
     // A history of states as the OpenCL backend leaves them (float32 values widened to double,
@@ -443,6 +450,9 @@ private slots:
         const QByteArray packed = projectToBytes(project), plain = asVersion1(packed);
         QVERIFY(!packed.isEmpty());
         QVERIFY2(packed.size() * 5 <= plain.size(), qPrintable(u"%1 bytes packed, %2 plain"_s.arg(packed.size()).arg(plain.size())));
+        // Smooth contours: the linear prediction leaves smaller differences than version 2's.
+        const QByteArray version2 = asVersion(packed, 2);
+        QVERIFY2(packed.size() < version2.size(), qPrintable(u"%1 bytes linear, %2 from the value before"_s.arg(packed.size()).arg(version2.size())));
         const ProjectReadResult read = parseProject(packed, u"p"_s);
         QVERIFY2(read.ok(), qPrintable(read.error));
         verifySameProject(read.project, project);
@@ -666,12 +676,12 @@ private slots:
         row("packed previous positions of another length", setState0([](const QByteArray&) {
                 sim::SimulationState s = fluidState(0.0, 1);
                 s.contours[0].previous.pop_back();
-                return encodeState(s, StateEncoding::Packed);
-            }, StateEncoding::Packed),
+                return encodeState(s, StateEncoding::PackedLinear);
+            }, StateEncoding::PackedLinear),
             u"states[0]: a contour's previous positions: 8 values, but 10 to predict them from"_s);
         // Contour 0's positions: count, the first point as it is, then the shift and the planes.
         row("packed array without plane 0", setState0([](QByteArray raw) { return poke(raw, kContour0XAt + 16 + 1, quint8(0xfe)); },
-                                                      StateEncoding::Packed),
+                                                      StateEncoding::PackedLinear),
             u"states[0]: a contour's positions: a packed array's shift 0 or planes 254 are impossible"_s);
     }
 
