@@ -14,6 +14,9 @@ using namespace json;
 namespace {
 
 inline constexpr qsizetype kMaxDrives = 1000;
+// A drive is made when the file is read (its target rasterised and blurred on its grid): so that no
+// file makes the reader work for minutes, its drives' grids hold four of the largest at most.
+inline constexpr std::int64_t kMaxDriveCells = 4 * std::int64_t(limits::maxGrid) * limits::maxGrid;
 inline constexpr qsizetype kMaxContours = 100'000;
 inline constexpr qsizetype kMaxEntries = 100'000'000;
 
@@ -267,14 +270,22 @@ QJsonArray journalToJson(const std::vector<JournalEntry>& entries, std::int64_t 
 
 std::vector<DrivePtr> readDrives(const Field& field)
 {
-    return readList<DrivePtr>(field, 0, kMaxDrives, [](const Field& item) {
-        const DriveSpec spec = readAs(item, driveKeys);
+    const std::vector<DriveSpec> specs =
+        readList<DriveSpec>(field, 0, kMaxDrives, [](const Field& item) { return readAs(item, driveKeys); });
+    std::int64_t cells = 0;
+    for (const DriveSpec& spec : specs)
+        cells += std::int64_t(spec.grid.nx) * spec.grid.ny;
+    if (cells > kMaxDriveCells)
+        field.fail(u"the drives' grids hold %1 cells in all, more than %2"_s.arg(cells).arg(kMaxDriveCells));
+    std::vector<DrivePtr> drives;
+    for (std::size_t i = 0; i < specs.size(); ++i) {
         try {
-            return std::make_shared<const sim::TargetDrive>(spec.target, spec.grid, spec.settings);
+            drives.push_back(std::make_shared<const sim::TargetDrive>(specs[i].target, specs[i].grid, specs[i].settings));
         } catch (const std::invalid_argument& e) {
-            item.fail(QString::fromUtf8(e.what()));
+            field.element(field.array(0, kMaxDrives), qsizetype(i)).fail(QString::fromUtf8(e.what()));
         }
-    });
+    }
+    return drives;
 }
 
 std::vector<JournalEntry> readJournal(const Field& field, std::int64_t steps, const std::vector<DrivePtr>& drives)

@@ -627,6 +627,15 @@ private slots:
                 {u"target"_s, QJsonArray{QJsonArray{QJsonArray{5, 5, 5.1, 5, 5, 5.1}}}}, {u"cells"_s, QJsonArray{8, 8}},
                 {u"width"_s, 1}, {u"height"_s, 1}, {u"strength"_s, 1}, {u"attenuation"_s, 1}, {u"blur"_s, 0.1}, {u"gathering"_s, 0}}}),
             u"drives[0]: target drive: the target covers none of the canvas"_s);
+        row("drives too large", setManifest(u"drives"_s, [] {
+                QJsonArray drives;
+                for (int k = 0; k < 5; ++k)
+                    drives.append(QJsonObject{{u"target"_s, QJsonArray{QJsonArray{QJsonArray{0.1, 0.1, 0.9, 0.1, 0.5, 0.9}}}},
+                                              {u"cells"_s, QJsonArray{1024, 1024}}, {u"width"_s, 1}, {u"height"_s, 1},
+                                              {u"strength"_s, 1}, {u"attenuation"_s, 1}, {u"blur"_s, 0.1}, {u"gathering"_s, 0}});
+                return drives;
+            }()),
+            u"drives: the drives' grids hold 5242880 cells in all, more than 4194304"_s);
         row("blob past the end", setManifest(u"states/1/offset"_s, 1e9), u"states[1]: its bytes [1000000000,"_s);
         row("blob length past the end", setManifest(u"states/0/length"_s, 1e15), u"states[0]: its bytes [0, 1000000000000000)"_s);
         row("raw length disagrees", setManifest(u"states/0/raw_length"_s, 7),
