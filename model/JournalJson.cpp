@@ -237,11 +237,11 @@ QJsonArray DriveTable::toJson() const
     return array;
 }
 
-QJsonArray journalToJson(const std::vector<JournalEntry>& entries, std::int64_t fromStep, DriveTable& drives)
+QJsonArray journalToJson(const std::vector<JournalEntry>& entries, DriveTable& drives)
 {
     QJsonArray array;
     for (const JournalEntry& entry : entries) {
-        const std::int64_t step = entry.step - fromStep;
+        const std::int64_t step = entry.step;
         std::visit(
             [&](const auto& action) {
                 using Action = std::decay_t<decltype(action)>;

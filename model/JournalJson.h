@@ -24,8 +24,8 @@ private:
     std::vector<DrivePtr> m_drives;
 };
 
-// `entries`' steps are written counted from `fromStep`.
-QJsonArray journalToJson(const std::vector<JournalEntry>& entries, std::int64_t fromStep, DriveTable& drives);
+// `entries` with their steps as they are (counted from the state they were reached from).
+QJsonArray journalToJson(const std::vector<JournalEntry>& entries, DriveTable& drives);
 
 // Throws json::ReadError at the key path of what is wrong.
 std::vector<DrivePtr> readDrives(const json::Field& field);

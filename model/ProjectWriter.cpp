@@ -76,7 +76,7 @@ std::vector<QJsonValue> reachedJson(const std::vector<JournalMark>& marks, Drive
             continue;
         reached[i] = QJsonObject{{u"from"_s, qint64(*from)},
                                  {u"steps"_s, qint64(to.step - marks[*from].step)},
-                                 {u"entries"_s, journalToJson(*entries, 0, drives)}};
+                                 {u"entries"_s, journalToJson(*entries, drives)}};
     }
     return reached;
 }
