@@ -232,13 +232,12 @@ int animateCommand(const QStringList& arguments)
             player = std::make_unique<model::HistoryReplay>(read->scene, *read->history, factory);
         else
             player = std::make_unique<model::SceneRunner>(read->scene, factory);
-        const model::Player& runner = *player;
         RenderProgress progress(frames, QStringLiteral("frame"));
         SceneFrames sceneFrames(*player, range, interruptRequested);
         const render::Animation animation = sceneFrames.animation();
         const render::AnimationProgress goOn = [&](int done) {
             framesDone = done;
-            progress.update(done, runner.simulation().vertexCount());
+            progress.update(done, player->simulation().vertexCount());
             limit = sceneFrames.limit();
             return limit.isEmpty() && !interruptRequested();
         };

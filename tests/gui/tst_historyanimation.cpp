@@ -37,6 +37,29 @@ bool showPaused(MainWindow& w, const QString& path)
     return true;
 }
 
+// The document's history played again through all its spans.
+struct Replayed {
+    int unrecorded = -1;     // commands whose span the journal does not hold
+    std::int64_t steps = 0;  // the spans' steps, all played
+    int regions = 0;         // at the end
+    bool endsLive = false;   // in the live state, bit for bit
+};
+
+Replayed replayHistory(MainWindow& w)
+{
+    const model::ProjectDraft draft = w.document().draftProject();
+    Replayed replayed;
+    const std::vector<model::ReplaySpan> spans = draft.replaySpans(&replayed.unrecorded);
+    for (const model::ReplaySpan& span : spans)
+        replayed.steps += span.steps;
+    model::HistoryReplay replay(draft.scene(), spans);
+    for (std::int64_t k = 0; k < replayed.steps; ++k)
+        replay.step();
+    replayed.regions = replay.simulation().regionCount();
+    replayed.endsLive = replay.simulation().snapshot() == draft.finish().state;
+    return replayed;
+}
+
 class TestHistoryAnimation : public QObject {
     Q_OBJECT
 
@@ -77,21 +100,12 @@ private slots:
         w.simulation().sync();
         const std::int64_t steps = w.simulation().frame()->steps;
 
-        const model::ProjectDraft draft = w.document().draftProject();
-        int unrecorded = -1;
-        const std::vector<model::ReplaySpan> spans = draft.replaySpans(&unrecorded);
-        QCOMPARE(unrecorded, 0);
-        std::int64_t spanSteps = 0;
-        for (const model::ReplaySpan& span : spans)
-            spanSteps += span.steps;
-        QCOMPARE(spanSteps, steps);
+        const Replayed replayed = replayHistory(w);
+        QCOMPARE(replayed.unrecorded, 0);
+        QCOMPARE(replayed.steps, steps);
         QVERIFY2(steps > 6, qPrintable(QString::number(steps)));  // the stroke's steps too
-        model::HistoryReplay replay(draft.scene(), spans);
-        for (std::int64_t k = 0; k < steps; ++k)
-            replay.step();
-        const sim::SimulationState live = draft.finish().state;
-        QCOMPARE(replay.simulation().regionCount(), 2);
-        QVERIFY(replay.simulation().snapshot() == live);
+        QCOMPARE(replayed.regions, 2);
+        QVERIFY(replayed.endsLive);
 
         const QString json = m_dir.filePath(QStringLiteral("history.json"));
         test::whenModal<AnimationDialog>([json](AnimationDialog* dialog) {
@@ -141,19 +155,11 @@ private slots:
         QTest::keyClick(&w, Qt::Key_Period);
         w.simulation().sync();
 
-        const model::ProjectDraft draft = w.document().draftProject();
-        int unrecorded = -1;
-        const std::vector<model::ReplaySpan> spans = draft.replaySpans(&unrecorded);
-        QCOMPARE(unrecorded, 0);
-        std::int64_t steps = 0;
-        for (const model::ReplaySpan& span : spans)
-            steps += span.steps;
-        QCOMPARE(steps, std::int64_t(5));  // three before saving, two after opening
-        model::HistoryReplay replay(draft.scene(), spans);
-        for (std::int64_t k = 0; k < steps; ++k)
-            replay.step();
-        QCOMPARE(replay.simulation().regionCount(), 3);
-        QVERIFY(replay.simulation().snapshot() == draft.finish().state);
+        const Replayed replayed = replayHistory(w);
+        QCOMPARE(replayed.unrecorded, 0);
+        QCOMPARE(replayed.steps, std::int64_t(5));  // three before saving, two after opening
+        QCOMPARE(replayed.regions, 3);
+        QVERIFY(replayed.endsLive);
         w.document().undoStack().setClean();
     }
 
