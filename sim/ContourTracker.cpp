@@ -115,11 +115,28 @@ public:
     // leave.
     bool holdsShape(int v, const ExactMotion& motion) const
     {
-        const double tolerance = motion.chordTolerance;
+        if (!m_rewind || !(motion.chordTolerance > 0.0))
+            return false;
         const int a = m_before[v], b = m_next[v];
-        return m_rewind && tolerance > 0.0 &&
-               std::max(squaredDistanceToSegment(m_position[v], m_position[a], m_position[b]),
-                        squaredDistanceToSegment(m_previous[v], m_previous[a], m_previous[b])) > tolerance * tolerance;
+        const auto [now, before] = chordTolerances(a, b, motion);
+        return squaredDistanceToSegment(m_position[v], m_position[a], m_position[b]) > now * now ||
+               squaredDistanceToSegment(m_previous[v], m_previous[a], m_previous[b]) > before * before;
+    }
+
+    // How far the chord a–b may stray from the curve, in the positions now and in those at the start
+    // of the motion. A map that keeps areas widens a stray across an edge by as much as it presses
+    // the edge along (its stretch k = |F(b) − F(a)| / |b − a| below 1), so where a vertex is placed
+    // on the chord as it was (recentred), the chord then must stray k times less; and the map's
+    // inverse widens a stray across the edge now by k above 1, so for the inverse to return the
+    // ink within the tolerance the chord now must stray k times less (at least an eighth of the
+    // tolerance, so the tip of a hairpin, stretched without bound, is not split without end).
+    std::pair<double, double> chordTolerances(int a, int b, const ExactMotion& motion) const
+    {
+        const double tolerance = motion.chordTolerance, before = glm::distance(m_previous[a], m_previous[b]);
+        if (!motion.keepsAreas || !(before > 0.0))
+            return {tolerance, tolerance};
+        const double stretch = length(a, b) / before;
+        return {tolerance / std::clamp(stretch, 1.0, 8.0), tolerance * std::min(stretch, 1.0)};
     }
 
     // Eq. 2: the new vertex is the point at fraction s of the edge *at the start of the motion*
@@ -165,7 +182,8 @@ public:
     {
         const int b = m_next[a];
         const Vec2 x = motion.map(m_previous[a] + s * (m_previous[b] - m_previous[a]));
-        return squaredDistanceToSegment(x, m_position[a], m_position[b]) > motion.chordTolerance * motion.chordTolerance;
+        const double tolerance = chordTolerances(a, b, motion).first;
+        return squaredDistanceToSegment(x, m_position[a], m_position[b]) > tolerance * tolerance;
     }
 
     void unlink(int v)
@@ -393,7 +411,7 @@ bool ContourTracker::drop(const DropPush& push, const Flow& flow, double t)
 bool ContourTracker::applyMap(const ExactMap& map, const Flow& flow, double t)
 {
     return applyMotion({[&map](Vec2 p) { return mapped(map, p); },
-                        [&map](Vec2 a, Vec2 b) { return creaseCrossing(map, a, b); }, m_settings.chordTolerance},
+                        [&map](Vec2 a, Vec2 b) { return creaseCrossing(map, a, b); }, m_settings.chordTolerance, true},
                        flow, t);
 }
 

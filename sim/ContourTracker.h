@@ -28,11 +28,14 @@ using MotionMap = std::function<Vec2(Vec2 p)>;
 // map: a line along which it bends sharply and is not smooth, such as a comb's tine), and
 // collapses no vertex whose removal would leave a chord straying that far. `crease(a, b)` is where
 // the segment a–b of positions before the motion crosses a crease, as a fraction along it (the
-// crossing nearest its middle), if it does. The flow's step has neither (tolerance 0).
+// crossing nearest its middle), if it does. The flow's step has neither (tolerance 0). A tool's
+// map keeps areas (`keepsAreas`), and its inverse undoes it: refinement then holds it to the
+// tolerance pulled back as well (Ring::chordTolerances).
 struct ExactMotion {
     MotionMap map;
     std::function<std::optional<double>(Vec2 a, Vec2 b)> crease;
     double chordTolerance = 0.0;
+    bool keepsAreas = false;
 };
 
 class ContourTracker {

@@ -214,16 +214,29 @@ VF_INLINE bool depictedExactly(MOTION_ARGS)
     return motionKind != MOTION_FLOW && rewind && chordTolerance > 0.0f;
 }
 
-// Whether x lies farther than the chord tolerance from the segment a–b. The tolerance is at least
-// two roundings of the coordinates: below that, a float cannot tell a stray from its rounding.
-VF_INLINE bool straysFrom(MOTION_ARGS, float2 x, float2 a, float2 b)
+// ContourTracker's chordTolerances: how far the chord of the edge (position, previous position)
+// left–right may stray from the curve, now (x) and at the start of the motion (y). A tool's map
+// keeps areas, so a stray across an edge widens by what the map presses the edge along, and by
+// what it stretches it when the inverse undoes the map.
+VF_INLINE float2 chordTolerances(MOTION_ARGS, float4 left, float4 right)
+{
+    const float before = distance(left.zw, right.zw);
+    if (motionKind == MOTION_DROP || !(before > 0.0f))
+        return (float2)(chordTolerance);
+    const float stretch = distance(left.xy, right.xy) / before;
+    return (float2)(chordTolerance / clamp(stretch, 1.0f, 8.0f), chordTolerance * fmin(stretch, 1.0f));
+}
+
+// Whether x lies farther than `tolerance` from the segment a–b. The tolerance is at least two
+// roundings of the coordinates: below that, a float cannot tell a stray from its rounding.
+VF_INLINE bool straysFrom(float tolerance, float2 x, float2 a, float2 b)
 {
     const float2 reach = fmax(fmax(fabs(a), fabs(b)), fabs(x));
-    const float tolerance = fmax(chordTolerance, 2.0f * FLT_EPSILON * fmax(reach.x, reach.y));
+    const float resolved = fmax(tolerance, 2.0f * FLT_EPSILON * fmax(reach.x, reach.y));
     const float2 edge = b - a, toX = x - a;
     const float along = clamp(dot(toX, edge) / fmax(dot(edge, edge), FLT_MIN), 0.0f, 1.0f);
     const float2 off = toX - along * edge;
-    return dot(off, off) > tolerance * tolerance;
+    return dot(off, off) > resolved * resolved;
 }
 
 // Whether fraction s of the segment a–b lies farther from both its ends than eight roundings of the
@@ -244,10 +257,11 @@ VF_INLINE float splitPoint(MOTION_ARGS, float4 left, float4 right, bool tooLong)
     if (!depictedExactly(MOTION_PASS))
         return tooLong ? 0.5f : -1.0f;
     const float s = creaseCrossing(MOTION_PASS, left.zw, right.zw);
+    const float tolerance = chordTolerances(MOTION_PASS, left, right).x;
     if (s >= 0.0f && (creaseInside(left.zw, right.zw, s) ||
-                      straysFrom(MOTION_PASS, mapped(MOTION_PASS, mix(left.zw, right.zw, s)), left.xy, right.xy)))
+                      straysFrom(tolerance, mapped(MOTION_PASS, mix(left.zw, right.zw, s)), left.xy, right.xy)))
         return s;
-    return tooLong || straysFrom(MOTION_PASS, mapped(MOTION_PASS, 0.5f * (left.zw + right.zw)), left.xy, right.xy)
+    return tooLong || straysFrom(tolerance, mapped(MOTION_PASS, 0.5f * (left.zw + right.zw)), left.xy, right.xy)
                ? 0.5f
                : -1.0f;
 }

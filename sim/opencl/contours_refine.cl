@@ -494,9 +494,11 @@ VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, SWEEP_ARGS, __global con
         return ACTION_KEEP;
     // A map depicted exactly keeps a vertex whose removal would leave a chord straying from the
     // mapped curve, or from the edge it came from (ContourTracker's holdsShape).
-    if (depictedExactly(MOTION_PASS) && (straysFrom(MOTION_PASS, pv, pa, pb) ||
-                                          straysFrom(MOTION_PASS, motion[v].zw, motion[a].zw, motion[b].zw)))
-        return ACTION_KEEP;
+    if (depictedExactly(MOTION_PASS)) {
+        const float2 tolerance = chordTolerances(MOTION_PASS, motion[a], motion[b]);
+        if (straysFrom(tolerance.x, pv, pa, pb) || straysFrom(tolerance.y, motion[v].zw, motion[a].zw, motion[b].zw))
+            return ACTION_KEEP;
+    }
     // Removed or recentred only where that sweeps over no ink: a recentring is a removal, then an
     // insertion at x.
     if (sweepsInk(SWEEP_PASS, pa, pv, pb, pv))
