@@ -5,15 +5,30 @@
 
 namespace vf::sim {
 
+namespace {
+
+// Whether the contour turns by more than a right angle at vertex i.
+bool turnsSharply(const Polygon& polygon, std::size_t i)
+{
+    const std::size_t n = polygon.size();
+    const Vec2 in = polygon[i] - polygon[(i + n - 1) % n], out = polygon[(i + 1) % n] - polygon[i];
+    return in.x * out.x + in.y * out.y < 0.0;
+}
+
+} // namespace
+
 void correctArea(Polygon& polygon, double targetArea, double shortEdge, const std::vector<bool>& held, double maxOffset)
 {
     const std::size_t n = polygon.size();
     if (n < 3)
         return;
+    std::vector<bool> sharp(n);
+    for (std::size_t i = 0; i < n; ++i)
+        sharp[i] = turnsSharply(polygon, i);
     Polygon direction(n);
     double rate = 0.0;  // Σ g_i·u_i: the area's rate of change under the offset
     for (std::size_t i = 0; i < n; ++i) {
-        if (held[i]) {
+        if (held[i] || sharp[(i + n - 1) % n] || sharp[i] || sharp[(i + 1) % n]) {
             direction[i] = Vec2(0.0);
             continue;
         }

@@ -666,7 +666,8 @@ void DeviceContours::Impl::contourTerms(cl_int mode, Vec2 point, double dropArea
            contourCount, cl_uint(regions.size()), tileTotals, contourTarget, contourLambda);
 }
 
-// As ContourTracker::correctAreas: a vertex with another part within the hold distance stays.
+// As ContourTracker::correctAreas: a vertex with another part within the hold distance stays, as do
+// those at or beside a sharp turn (sim/AreaCorrection.h).
 void DeviceContours::Impl::correctAreas()
 {
     findNearestOtherParts(grid());

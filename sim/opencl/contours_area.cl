@@ -30,13 +30,20 @@ VF_INLINE acc2 areaGradient(acc2 before, acc2 after)
 // Which vertices the correction holds still (sim::ContourTracker::correctAreas): with `hold`, those
 // whose nearest other part lies within √holdWithin2, from each vertex's grid slot and each grid
 // entry's squared distance to its nearest other part (float bits), as the proximity search leaves
-// them.
+// them; and those at or beside a turn sharper than a right angle (sim/AreaCorrection.h).
 #define HOLD_ARGS int hold, float holdWithin2, __global const uint *slot, __global const uint *gap2
 #define HOLD_PASS hold, holdWithin2, slot, gap2
 
-VF_INLINE bool heldAt(HOLD_ARGS, uint i)
+VF_INLINE bool turnsSharply(__global const float4 *motion, uint i, uint first, uint count)
 {
-    return hold && as_float(gap2[slot[i]]) < holdWithin2;
+    const float2 p = motion[i].xy;
+    return dot(p - motion[previousIn(i, first, count)].xy, motion[nextIn(i, first, count)].xy - p) < 0.0f;
+}
+
+VF_INLINE bool heldAt(HOLD_ARGS, __global const float4 *motion, uint i, uint first, uint count)
+{
+    return hold && (as_float(gap2[slot[i]]) < holdWithin2 || turnsSharply(motion, previousIn(i, first, count), first, count) ||
+                    turnsSharply(motion, i, first, count) || turnsSharply(motion, nextIn(i, first, count), first, count));
 }
 
 // How the correction moves a vertex per unit λ: along the unit normal, shorter where the
@@ -64,8 +71,8 @@ VF_INLINE acc4 contourTerms(int mode, float2 point, float shortEdge, HOLD_ARGS, 
     }
     // Products of floats are exact in double, so the area's shoelace terms carry no rounding there.
     const acc2 g = areaGradient(wide(motion[previousIn(i, first, count)]), q);
-    const acc2 u = heldAt(HOLD_PASS, i) ? (acc2)(0) : correctionDirection(g, shortEdge);
-    const acc2 uNext = heldAt(HOLD_PASS, b) ? (acc2)(0)
+    const acc2 u = heldAt(HOLD_PASS, motion, i, first, count) ? (acc2)(0) : correctionDirection(g, shortEdge);
+    const acc2 uNext = heldAt(HOLD_PASS, motion, b, first, count) ? (acc2)(0)
                                              : correctionDirection(areaGradient(p, wide(motion[nextIn(b, first, count)])), shortEdge);
     return (acc4)(crossWide(p, q), dot(g, u), crossWide(u, uNext), 0);
 }
@@ -140,7 +147,7 @@ VF_KERNEL void correctArea(float shortEdge, HOLD_ARGS, __global const float4 *mo
         return;
     const uint c = contourOf[i], first = contourOffset[c], count = contourCount[c];
     const float4 m = motion[i];
-    if (heldAt(HOLD_PASS, i)) {
+    if (heldAt(HOLD_PASS, motion, i, first, count)) {
         corrected[i] = m;
         return;
     }
