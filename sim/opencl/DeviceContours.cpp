@@ -43,17 +43,25 @@ constexpr std::size_t minCapacity = std::size_t(1) << 14;
 // MOTION_ARGS of contours.cl: how vertices move in this step, and where split vertices go.
 struct Motion {
     cl_int kind = motionFlow;  // RK4 through the flow, the drop's push or a comb
-    cl_float4 a{}, b{}, c{};   // the map's parameters (contours.cl, MOTION_ARGS)
+    Parameters a{}, b{}, c{};  // the map's parameters (contours.cl, MOTION_ARGS), in acc_t
     cl_int rewind = 1;         // TrackingSettings::timeRewinding
     cl_float chordTolerance = 0.0f;  // a map's, ExactMotion's (none for the flow)
+    bool fp64 = false;               // acc_t is double
 };
+
+void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Parameters& p, bool fp64)
+{
+    if (fp64)
+        kernel.setArg(index++, cl_double4{{p[0], p[1], p[2], p[3]}});
+    else
+        kernel.setArg(index++, cl_float4{{cl_float(p[0]), cl_float(p[1]), cl_float(p[2]), cl_float(p[3])}});
+}
 
 void setKernelArg(cl::Kernel& kernel, cl_uint& index, const Motion& motion)
 {
     kernel.setArg(index++, motion.kind);
-    kernel.setArg(index++, motion.a);
-    kernel.setArg(index++, motion.b);
-    kernel.setArg(index++, motion.c);
+    for (const Parameters& p : {motion.a, motion.b, motion.c})
+        setKernelArg(kernel, index, p, motion.fp64);
     kernel.setArg(index++, motion.rewind);
     kernel.setArg(index++, motion.chordTolerance);
 }
@@ -174,10 +182,10 @@ struct DeviceContours::Impl {
     std::size_t tiles() const { return roundUpToLocal(vertices + 1) / localSize; }
     Grid grid() const;
     Grid sweepGrid() const;
-    Motion flowMotion() const { return Motion{motionFlow, {}, {}, {}, cl_int(settings.timeRewinding)}; }
-    Motion mapMotion(cl_int kind, cl_float4 a, cl_float4 b, cl_float4 c = {}) const
+    Motion flowMotion() const { return Motion{motionFlow, {}, {}, {}, cl_int(settings.timeRewinding), 0.0f, fp64}; }
+    Motion mapMotion(cl_int kind, const Parameters& a, const Parameters& b, const Parameters& c = {}) const
     {
-        return Motion{kind, a, b, c, cl_int(settings.timeRewinding), cl_float(settings.chordTolerance)};
+        return Motion{kind, a, b, c, cl_int(settings.timeRewinding), cl_float(settings.chordTolerance), fp64};
     }
 
     bool move(const FlowBinding& flow, const Motion& motion, bool startKnown = false);
@@ -923,7 +931,7 @@ bool DeviceContours::advect(const FlowBinding& flow, bool startSampled)
 bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
 {
     return guarded([&] {
-        return m->move(flow, m->mapMotion(motionDrop, {{cl_float(center.x), cl_float(center.y), cl_float(radius), 0.0f}}, {}));
+        return m->move(flow, m->mapMotion(motionDrop, {{center.x, center.y, radius, 0.0}}, {}));
     });
 }
 

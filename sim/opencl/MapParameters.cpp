@@ -21,9 +21,9 @@ std::optional<MapParameters> parametersOf(const Comb& comb)
     const double waveNumber = 2.0 * std::numbers::pi / comb.wavelength;
     const double phase = comb.phase - waveNumber * glm::dot(0.5 * (comb.from + comb.to), along);
     return MapParameters{motionComb,
-                         {{cl_float(comb.from.x), cl_float(comb.from.y), cl_float(along.x), cl_float(along.y)}},
-                         {{cl_float(length), cl_float(comb.sharpness), cl_float(comb.spacing), cl_float(comb.tines)}},
-                         {{cl_float(comb.amplitude), cl_float(waveNumber), cl_float(phase), 0.0f}}};
+                         {{comb.from.x, comb.from.y, along.x, along.y}},
+                         {{length, comb.sharpness, comb.spacing, double(comb.tines)}},
+                         {{comb.amplitude, waveNumber, phase, 0.0}}};
 }
 
 std::optional<MapParameters> parametersOf(const CircularComb& comb)
@@ -31,8 +31,8 @@ std::optional<MapParameters> parametersOf(const CircularComb& comb)
     if (comb.angle == 0.0 || comb.tines < 1)
         return std::nullopt;
     return MapParameters{motionCircularComb,
-                         {{cl_float(comb.centre.x), cl_float(comb.centre.y), cl_float(comb.radius), cl_float(comb.spacing)}},
-                         {{cl_float(comb.angle), cl_float(comb.sharpness), cl_float(comb.tines), 0.0f}}};
+                         {{comb.centre.x, comb.centre.y, comb.radius, comb.spacing}},
+                         {{comb.angle, comb.sharpness, double(comb.tines), 0.0}}};
 }
 
 std::optional<MapParameters> parametersOf(const Swirl& swirl)
@@ -40,7 +40,7 @@ std::optional<MapParameters> parametersOf(const Swirl& swirl)
     if (swirl.angle == 0.0)
         return std::nullopt;
     return MapParameters{motionSwirl,
-                         {{cl_float(swirl.centre.x), cl_float(swirl.centre.y), cl_float(swirl.radius), cl_float(swirl.angle)}}};
+                         {{swirl.centre.x, swirl.centre.y, swirl.radius, swirl.angle}}};
 }
 
 } // namespace

@@ -25,7 +25,7 @@ typedef VF_ACC4 acc4;
 // map is depicted within `chordTolerance` (ExactMotion in sim/ContourTracker.h; 0 for the flow).
 // MOTION_*, STATUS_*, FLAG_* and TERMS_* are defined by the host as build options
 // (ContourCodes.h).
-#define MOTION_ARGS int motionKind, float4 mapA, float4 mapB, float4 mapC, int rewind, float chordTolerance
+#define MOTION_ARGS int motionKind, acc4 mapA, acc4 mapB, acc4 mapC, int rewind, float chordTolerance
 #define MOTION_PASS motionKind, mapA, mapB, mapC, rewind, chordTolerance
 
 // Words of the status buffer the host reads once per pass. Flags are raised with atomic_or, the
@@ -95,108 +95,123 @@ VF_INLINE float2 rungeKutta4(FLOW_PARAMS, float2 p)
     return (float2)(x, y);
 }
 
-// The drop's push P → C + (P−C)·sqrt(1 + r²/|P−C|²), area-preserving outside the disc.
-VF_INLINE float2 dropPush(float2 centre, float radius, float2 p)
+// The maps are evaluated in acc_t (double on fp64 devices) from the float positions, and their
+// parameters come in acc_t: a comb shears tens of times across its tines, so a float evaluation
+// would place vertices near a tine as far off as the float spacing times the shear, across edges
+// shorter than that (a fold), and its inverse would not return the ink within the tolerance.
+VF_INLINE acc2 exactly(float2 p)
 {
-    const float2 d = p - centre;
-    const float l2 = dot(d, d);
-    if (l2 == 0.0f)
-        return centre + (float2)(radius, 0.0f);  // the centre itself: any direction is as good
-    return centre + d * sqrt(1.0f + radius * radius / l2);
+    return (acc2)((acc_t)p.x, (acc_t)p.y);
+}
+
+VF_INLINE float2 rounded(acc2 p)
+{
+    return (float2)((float)p.x, (float)p.y);
+}
+
+// The drop's push P → C + (P−C)·sqrt(1 + r²/|P−C|²), area-preserving outside the disc.
+VF_INLINE acc2 dropPush(acc2 centre, acc_t radius, acc2 p)
+{
+    const acc2 d = p - centre;
+    const acc_t l2 = dot(d, d);
+    if (l2 == 0)
+        return centre + (acc2)(radius, (acc_t)0);  // the centre itself: any direction is as good
+    return centre + d * sqrt(1 + radius * radius / l2);
 }
 
 // sim::Comb: mapA is `from` and the unit direction M, mapB the length z, the sharpness, the
 // spacing and the tine count, mapC the wave: amplitude, 2π/wavelength and the phase at the origin.
 // A wavy comb's wave at p, across the stroke: sign −1 waves the plane, +1 unwaves it.
-VF_INLINE float2 combWaved(float4 line, float4 wave, float2 p, float sign)
+VF_INLINE acc2 combWaved(acc4 line, acc4 wave, acc2 p, acc_t sign)
 {
-    const float2 along = line.zw;
-    return p + sign * wave.x * sin(wave.y * dot(p, along) + wave.z) * (float2)(-along.y, along.x);
+    const acc2 along = line.zw;
+    return p + sign * wave.x * sin(wave.y * dot(p, along) + wave.z) * (acc2)(-along.y, along.x);
 }
 
 // The comb's map (sim/Comb.cpp): waved, sheared along M by z·u/(d + u) for each tine, d the
 // distance to its line, and unwaved.
-VF_INLINE float2 combShift(float4 line, float4 shape, float4 wave, float2 p)
+VF_INLINE acc2 combShift(acc4 line, acc4 shape, acc4 wave, acc2 p)
 {
-    const float2 from = line.xy, along = line.zw, across = (float2)(-along.y, along.x);
-    const float2 straight = combWaved(line, wave, p, -1.0f);
+    const acc2 from = line.xy, along = line.zw, across = (acc2)(-along.y, along.x);
+    const acc2 straight = combWaved(line, wave, p, -1);
     const int tines = (int)shape.w;
-    float shift = 0.0f;
+    acc_t shift = 0;
     for (int k = 0; k < tines; ++k) {
-        const float2 tine = from + ((float)k - 0.5f * (float)(tines - 1)) * shape.z * across;
+        const acc2 tine = from + ((acc_t)k - (acc_t)0.5 * (acc_t)(tines - 1)) * shape.z * across;
         shift += shape.x * shape.y / (fabs(dot(straight - tine, across)) + shape.y);
     }
-    return combWaved(line, wave, straight + shift * along, 1.0f);
+    return combWaved(line, wave, straight + shift * along, 1);
 }
 
 // sim::wholeCrossing: where w, linear from wa to wb, passes strictly a whole number in [0, last],
 // the one nearest the middle, as the fraction there, or -1.
-VF_INLINE float wholeCrossing(float wa, float wb, float last)
+VF_INLINE float wholeCrossing(acc_t wa, acc_t wb, acc_t last)
 {
-    const float first = fmax(floor(fmin(wa, wb)) + 1.0f, 0.0f), final = fmin(ceil(fmax(wa, wb)) - 1.0f, last);
+    const acc_t first = fmax(floor(fmin(wa, wb)) + 1, (acc_t)0), final = fmin(ceil(fmax(wa, wb)) - 1, last);
     if (!(first <= final))
         return -1.0f;
-    return (clamp(rint(0.5f * (wa + wb)), first, final) - wa) / (wb - wa);
+    return (float)((clamp(rint((acc_t)0.5 * (wa + wb)), first, final) - wa) / (wb - wa));
 }
 
 // Comb::tineCrossing: where the segment a–b crosses a tine's line (the crossing nearest its middle),
 // as a fraction along it, or -1.
-VF_INLINE float tineCrossing(float4 line, float4 shape, float4 wave, float2 a, float2 b)
+VF_INLINE float tineCrossing(acc4 line, acc4 shape, acc4 wave, acc2 a, acc2 b)
 {
-    a = combWaved(line, wave, a, -1.0f);
-    b = combWaved(line, wave, b, -1.0f);
-    const float2 across = (float2)(-line.w, line.z);
+    a = combWaved(line, wave, a, -1);
+    b = combWaved(line, wave, b, -1);
+    const acc2 across = (acc2)(-line.w, line.z);
     const int tines = (int)shape.w;
-    const float unit = shape.z > 0.0f ? shape.z : 1.0f, last = shape.z > 0.0f ? (float)(tines - 1) : 0.0f;
-    const float2 firstTine = line.xy - 0.5f * (float)(tines - 1) * shape.z * across;
+    const acc_t unit = shape.z > 0 ? shape.z : 1, last = shape.z > 0 ? (acc_t)(tines - 1) : 0;
+    const acc2 firstTine = line.xy - (acc_t)0.5 * (acc_t)(tines - 1) * shape.z * across;
     return wholeCrossing(dot(a - firstTine, across) / unit, dot(b - firstTine, across) / unit, last);
 }
 
 // p turned about `centre` by `angle`.
-VF_INLINE float2 turned(float2 p, float2 centre, float angle)
+VF_INLINE acc2 turned(acc2 p, acc2 centre, acc_t angle)
 {
-    const float c = cos(angle), s = sin(angle);
-    const float2 d = p - centre;
-    return centre + (float2)(c * d.x - s * d.y, s * d.x + c * d.y);
+    const acc_t c = cos(angle), s = sin(angle);
+    const acc2 d = p - centre;
+    return centre + (acc2)(c * d.x - s * d.y, s * d.x + c * d.y);
 }
 
 // sim::CircularComb (sim/Whirl.h): mapA is the centre, the first tine's radius and the spacing,
 // mapB the angle, the sharpness and the tine count.
-VF_INLINE float2 circularComb(float4 rings, float4 pull, float2 p)
+VF_INLINE acc2 circularComb(acc4 rings, acc4 pull, acc2 p)
 {
-    const float rho = distance(p, rings.xy);
-    float theta = 0.0f;
+    const acc_t rho = distance(p, rings.xy);
+    acc_t theta = 0;
     for (int k = 0; k < (int)pull.z; ++k)
-        theta += pull.x * pull.y / (fabs(rho - (rings.z + (float)k * rings.w)) + pull.y);
+        theta += pull.x * pull.y / (fabs(rho - (rings.z + (acc_t)k * rings.w)) + pull.y);
     return turned(p, rings.xy, theta);
 }
 
 // CircularComb::tineCrossing: where the segment a–b crosses a tine's circle, ρ taken as linear.
-VF_INLINE float ringCrossing(float4 rings, float4 pull, float2 a, float2 b)
+VF_INLINE float ringCrossing(acc4 rings, acc4 pull, acc2 a, acc2 b)
 {
-    const float unit = rings.w > 0.0f ? rings.w : 1.0f, last = rings.w > 0.0f ? pull.z - 1.0f : 0.0f;
+    const acc_t unit = rings.w > 0 ? rings.w : 1, last = rings.w > 0 ? pull.z - 1 : 0;
     return wholeCrossing((distance(a, rings.xy) - rings.z) / unit, (distance(b, rings.xy) - rings.z) / unit, last);
 }
 
 // sim::Swirl: mapA is the centre, the radius and the angle.
-VF_INLINE float2 swirl(float4 vortex, float2 p)
+VF_INLINE acc2 swirl(acc4 vortex, acc2 p)
 {
-    const float rho = distance(p, vortex.xy) / vortex.z;
+    const acc_t rho = distance(p, vortex.xy) / vortex.z;
     return turned(p, vortex.xy, vortex.w * exp(-rho * rho));
 }
 
 // Where a map (a drop or a tool's, not the flow) takes `start`.
 VF_INLINE float2 mapped(MOTION_ARGS, float2 start)
 {
+    const acc2 p = exactly(start);
     switch (motionKind) {
     case MOTION_DROP:
-        return dropPush(mapA.xy, mapA.z, start);
+        return rounded(dropPush(mapA.xy, mapA.z, p));
     case MOTION_COMB:
-        return combShift(mapA, mapB, mapC, start);
+        return rounded(combShift(mapA, mapB, mapC, p));
     case MOTION_CIRCULAR_COMB:
-        return circularComb(mapA, mapB, start);
+        return rounded(circularComb(mapA, mapB, p));
     default:
-        return swirl(mapA, start);
+        return rounded(swirl(mapA, p));
     }
 }
 
@@ -204,8 +219,8 @@ VF_INLINE float2 mapped(MOTION_ARGS, float2 start)
 VF_INLINE float creaseCrossing(MOTION_ARGS, float2 a, float2 b)
 {
     if (motionKind == MOTION_COMB)
-        return tineCrossing(mapA, mapB, mapC, a, b);
-    return motionKind == MOTION_CIRCULAR_COMB ? ringCrossing(mapA, mapB, a, b) : -1.0f;
+        return tineCrossing(mapA, mapB, mapC, exactly(a), exactly(b));
+    return motionKind == MOTION_CIRCULAR_COMB ? ringCrossing(mapA, mapB, exactly(a), exactly(b)) : -1.0f;
 }
 
 // Whether a map is depicted within its chord tolerance (the flow is not).
