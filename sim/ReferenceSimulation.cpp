@@ -41,14 +41,14 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
 
 bool ReferenceSimulation::applyMap(const ExactMap& map)
 {
-    separateLayers();
+    separateLayers(std::nullopt, &map);
     return m_tracker.applyMap(map, *m_flow, time());
 }
 
-void ReferenceSimulation::separateLayers(std::optional<Window> within)
+void ReferenceSimulation::separateLayers(std::optional<Window> within, const ExactMap* pressedBy)
 {
     const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
-    m_tracker.separateLayers(within);
+    m_tracker.separateLayers(within, pressedBy);
 }
 
 bool ReferenceSimulation::pushOutward(Vec2 center, double radius)

@@ -1009,11 +1009,11 @@ std::size_t DeviceContours::cutPinches()
     });
 }
 
-std::size_t DeviceContours::separateLayers(std::optional<Window> within)
+std::size_t DeviceContours::separateLayers(std::optional<Window> within, const ExactMap* pressedBy)
 {
     return guarded([&] {
         Impl::HostOutlines host = m->readOutlines();
-        const std::vector<VertexMove> moves = findSeparations(host.outlines, true, within);
+        const std::vector<VertexMove> moves = findSeparations(host.outlines, true, within, pressedBy);
         if (!moves.empty())
             m->moveVertices(host, moves);
         return moves.size();
