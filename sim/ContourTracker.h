@@ -71,10 +71,7 @@ public:
 
     // Cuts every contour where it pinches (sim/Pinches.h); returns how many cuts were made.
     std::size_t cutPinches();
-    std::size_t separateLayers(std::optional<Window> within, const ExactMap* pressedBy)
-    {
-        return sim::separateLayers(m_contours, within, pressedBy);
-    }
+    std::size_t separateLayers(std::optional<Window> within) { return sim::separateLayers(m_contours, within); }
 
     // Replaces all contours (snapshot restore); counts are recomputed.
     void setContours(std::vector<Contour> contours);

@@ -41,14 +41,14 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
 
 bool ReferenceSimulation::applyMap(const ExactMap& map)
 {
-    separateLayers(std::nullopt, &map);
+    separateLayers();
     return m_tracker.applyMap(map, *m_flow, time());
 }
 
-void ReferenceSimulation::separateLayers(std::optional<Window> within, const ExactMap* pressedBy)
+void ReferenceSimulation::separateLayers(std::optional<Window> within)
 {
     const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
-    m_tracker.separateLayers(within, pressedBy);
+    m_tracker.separateLayers(within);
 }
 
 bool ReferenceSimulation::pushOutward(Vec2 center, double radius)

@@ -38,7 +38,7 @@ public:
 protected:
     void growTargetAreasAround(Vec2 p, double area) override { m_tracker.growTargetAreasAround(p, area); }
     bool pushOutward(Vec2 center, double radius) override;
-    void separateLayers(std::optional<Window> within = std::nullopt, const ExactMap* pressedBy = nullptr) override;
+    void separateLayers(std::optional<Window> within = std::nullopt) override;
 
 private:
     SimulationSettings m_settings;

@@ -45,29 +45,14 @@ bool anotherPart(const Outline& q, std::size_t i, std::size_t j, double distance
     return way > limit;
 }
 
-// How many times `map` presses a layer along contour q at vertex i: how many times it stretches the
-// contour's tangent there, over the pinch width `width` either way (the larger: a comb's crease
-// stretches both ways alike, bending the contour there); 1 to maxPressing.
-double pressing(const ExactMap& map, const Outline& q, std::size_t i, double width)
-{
-    const std::size_t n = q.size();
-    const Vec2 chord = q[after(i, n)] - q[(i + n - 1) % n];
-    const double length = glm::length(chord);
-    if (!(length > 0.0))
-        return 1.0;
-    const Vec2 step = width / length * chord, at = mapped(map, q[i]);
-    const double stretch = std::max(glm::distance(mapped(map, q[i] + step), at), glm::distance(at, mapped(map, q[i] - step)));
-    return std::clamp(stretch / width, 1.0, maxPressing);
-}
-
-// Where vertex i of contour k goes to stand at least the pinch width (times the map's pressing
-// there, with `pressedBy`) off every other contour near it: pushed straight away from each such contour's nearest edge by what it lacks (one push per
+// Where vertex i of contour k goes to stand at least the pinch width off every other contour near
+// it: pushed straight away from each such contour's nearest edge by what it lacks (one push per
 // contour, however many of its short edges lie within reach), the sum at most one width long.
 // Itself where nothing is that near, where it lies on another contour (which side it belongs on is
 // then unknown), or where another part of its own contour is that near: a layer of one contour
 // thinner than the width is the pinch cut's to take, and a push would press it thinner still.
 Vec2 separated(const std::vector<Outline>& contours, const EdgeGrid& grid, const std::vector<double>& widths,
-               std::size_t k, std::size_t i, const ExactMap* pressedBy)
+               std::size_t k, std::size_t i)
 {
     struct Nearest {
         std::uint32_t contour;
@@ -78,16 +63,10 @@ Vec2 separated(const std::vector<Outline>& contours, const EdgeGrid& grid, const
     std::vector<Nearest> near;
     const Vec2 p = contours[k][i];
     bool ownLayer = false;
-    std::optional<double> pressed;  // found once an edge lies near
     grid.forEdgesNear(p, p, [&](EdgeGrid::Edge e) {
         const Outline& other = contours[e.contour];
         const Vec2 a = other[e.from], b = other[after(e.from, other.size())];
-        double width = std::max(widths[k], widths[e.contour]);
-        if (pressedBy) {
-            if (!pressed)
-                pressed = pressing(*pressedBy, contours[k], i, widths[k]);
-            width *= *pressed;
-        }
+        const double width = std::max(widths[k], widths[e.contour]);
         if (p.x < std::min(a.x, b.x) - width || p.x > std::max(a.x, b.x) + width ||
             p.y < std::min(a.y, b.y) - width || p.y > std::max(a.y, b.y) + width)
             return;
@@ -129,8 +108,7 @@ Vec2 stored(Vec2 p, bool singlePrecision)
 
 // Whether vertex i of contour k may move to `to`: its two edges, so moved, meet no edge of any
 // contour but their own neighbours (at the vertex they share). `positions` holds the contours as
-// moved so far; no vertex has moved farther than its contour's widest width, which the grid's boxes
-// allow.
+// moved so far; no vertex has moved farther than its contour's width, which the grid's boxes allow.
 bool moveIsClean(const std::vector<std::vector<Vec2>>& positions, const EdgeGrid& grid, std::size_t k,
                  std::size_t i, Vec2 to)
 {
@@ -169,17 +147,15 @@ Window withEdgesOf(const std::vector<Outline>& contours, Window window)
 } // namespace
 
 std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bool singlePrecision,
-                                        std::optional<Window> within, const ExactMap* pressedBy)
+                                        std::optional<Window> within)
 {
     std::vector<VertexMove> moves;
     if (contours.empty())
         return moves;
     const std::vector<double> widths = pinchWidths(contours);
-    // Boxes twice as wide as the widest width: an edge whose ends have moved (a width at most) is
-    // still found.
-    const double widest = pressedBy ? maxPressing : 1.0;
+    // Boxes twice as wide: an edge whose ends have moved (a width at most) is still found.
     std::vector<double> reach(widths.size());
-    std::transform(widths.begin(), widths.end(), reach.begin(), [widest](double w) { return 2.0 * widest * w; });
+    std::transform(widths.begin(), widths.end(), reach.begin(), [](double w) { return 2.0 * w; });
     const EdgeGrid grid(contours, reach, within ? std::optional(withEdgesOf(contours, *within)) : std::nullopt);
     // Where each vertex would go, from the positions before any move; then, in turn, the moves that
     // stay clean of the contours as moved so far.
@@ -188,7 +164,7 @@ std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bo
         for (std::size_t i = 0; i < contours[k].size(); ++i) {
             if (within && !within->holds(contours[k][i]))
                 continue;
-            if (const Vec2 to = stored(separated(contours, grid, widths, k, i, pressedBy), singlePrecision); to != contours[k][i])
+            if (const Vec2 to = stored(separated(contours, grid, widths, k, i), singlePrecision); to != contours[k][i])
                 wanted.push_back({std::uint32_t(k), std::uint32_t(i), to});
         }
     if (wanted.empty())
@@ -222,9 +198,9 @@ void moveVertices(std::vector<Contour>& contours, const std::vector<VertexMove>&
     }
 }
 
-std::size_t separateLayers(std::vector<Contour>& contours, std::optional<Window> within, const ExactMap* pressedBy)
+std::size_t separateLayers(std::vector<Contour>& contours, std::optional<Window> within)
 {
-    const std::vector<VertexMove> moves = findSeparations(outlinesOf(contours), false, within, pressedBy);
+    const std::vector<VertexMove> moves = findSeparations(outlinesOf(contours), false, within);
     moveVertices(contours, moves);
     return moves.size();
 }

@@ -5,7 +5,6 @@
 // area correction carries one side across the other; at the pinch width it is still far thinner
 // than a picture shows.
 #include "sim/EdgeGrid.h"
-#include "sim/ExactMap.h"
 #include "sim/Tracking.h"
 
 #include <cstddef>
@@ -25,14 +24,8 @@ struct VertexMove {
 };
 // With `singlePrecision` the moves are to positions a float holds (a device's), checked as such.
 // `within`: only the vertices inside that window move (checked against every edge they could meet).
-// `pressedBy`: the map about to act. It presses a layer along a contour as many times as it
-// stretches the contour's tangent t there, |J·t| (it keeps areas), so the width a vertex is moved
-// to is that many times the pinch width (at most maxPressing times): the layer keeps the width
-// after the map, where a chord follows the mapped curve only within the chord tolerance.
-constexpr double maxPressing = 16.0;
 std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bool singlePrecision = false,
-                                        std::optional<Window> within = std::nullopt,
-                                        const ExactMap* pressedBy = nullptr);
+                                        std::optional<Window> within = std::nullopt);
 // Moves vertex i of the ring to `to`; returns how much the ring's shoelace area changed.
 double moveVertex(std::span<Vec2> ring, std::size_t i, Vec2 to);
 // The moves made, in order, each contour's area target following its area: the ink pressed out of
@@ -40,7 +33,6 @@ double moveVertex(std::span<Vec2> ring, std::size_t i, Vec2 to);
 // back (it would move all of it, toward other ink too).
 void moveVertices(std::vector<Contour>& contours, const std::vector<VertexMove>& moves);
 // findSeparations on `contours`, the moves made by moveVertices. Returns how many vertices moved.
-std::size_t separateLayers(std::vector<Contour>& contours, std::optional<Window> within = std::nullopt,
-                           const ExactMap* pressedBy = nullptr);
+std::size_t separateLayers(std::vector<Contour>& contours, std::optional<Window> within = std::nullopt);
 
 } // namespace vf::sim

@@ -147,8 +147,7 @@ protected:
     // before and after it (it presses the layers near it, and leaves ink a hair from its centre a
     // hair outside its rim). Not in the steps: there the moves cost marbling a third of its time
     // (the refinement works the little bumps they leave), and flow presses layers gradually.
-    // Before a map, `pressedBy` is it: layers are widened by as much as it will press them.
-    virtual void separateLayers(std::optional<Window> within = std::nullopt, const ExactMap* pressedBy = nullptr) = 0;
+    virtual void separateLayers(std::optional<Window> within = std::nullopt) = 0;
 };
 
 // Throws std::invalid_argument with a one-line message for settings no backend can run.

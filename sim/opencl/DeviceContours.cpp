@@ -1009,11 +1009,11 @@ std::size_t DeviceContours::cutPinches()
     });
 }
 
-std::size_t DeviceContours::separateLayers(std::optional<Window> within, const ExactMap* pressedBy)
+std::size_t DeviceContours::separateLayers(std::optional<Window> within)
 {
     return guarded([&] {
         Impl::HostOutlines host = m->readOutlines();
-        const std::vector<VertexMove> moves = findSeparations(host.outlines, true, within, pressedBy);
+        const std::vector<VertexMove> moves = findSeparations(host.outlines, true, within);
         if (!moves.empty())
             m->moveVertices(host, moves);
         return moves.size();

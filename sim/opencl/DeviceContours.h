@@ -55,7 +55,7 @@ public:
     std::size_t cutPinches();
     // Layers between two contours widened to the pinch width (sim/Pinches.h), searched on the host
     // too, everywhere or within a window: the moved vertices are written. Returns how many moved.
-    std::size_t separateLayers(std::optional<Window> within, const ExactMap* pressedBy);
+    std::size_t separateLayers(std::optional<Window> within);
 
     // A tool's exact map (sim/ExactMap.h) as the motion, then refinement, as drop().
     bool applyMap(const ExactMap& map, const FlowBinding& flow);

@@ -61,14 +61,14 @@ int OpenClSimulation::addRegion(const std::vector<Polygon>& contours)
 
 bool OpenClSimulation::applyMap(const ExactMap& map)
 {
-    separateLayers(std::nullopt, &map);
+    separateLayers();
     return m_contours->applyMap(map, binding(m_time, m_time));
 }
 
-void OpenClSimulation::separateLayers(std::optional<Window> within, const ExactMap* pressedBy)
+void OpenClSimulation::separateLayers(std::optional<Window> within)
 {
     const PhaseClock::Scope timing(&m_phases, Phase::Pinches);
-    m_contours->separateLayers(within, pressedBy);
+    m_contours->separateLayers(within);
 }
 
 bool OpenClSimulation::pushOutward(Vec2 center, double radius)

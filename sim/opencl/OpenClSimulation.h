@@ -43,7 +43,7 @@ public:
 protected:
     void growTargetAreasAround(Vec2 p, double area) override { m_contours->growTargetAreasAround(p, area); }
     bool pushOutward(Vec2 center, double radius) override;
-    void separateLayers(std::optional<Window> within = std::nullopt, const ExactMap* pressedBy = nullptr) override;
+    void separateLayers(std::optional<Window> within = std::nullopt) override;
 
 private:
     // The flow over [t0, t1]: the fluid's fields at the last step's ends, or the analytic flow.

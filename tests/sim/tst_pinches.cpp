@@ -169,36 +169,6 @@ private slots:
         QVERIFY(apart == before);
     }
 
-    // Before a map, a layer is widened by as much as the map will press it: a comb drawn across it
-    // stretches the layer's line, and so presses the layer, about five times at its tine (z / u),
-    // less beside it, and not at all far off, where each side moves a width off the other.
-    void layerIsWidenedByWhatAMapWillPressIt()
-    {
-        const Polygon below = outline({{0.1, 0.7}, {0.5, 0.7}, {0.5, 0.8}, {0.1, 0.8}});
-        const Polygon above = outline({{0.1, 0.8 + 1e-7}, {0.5, 0.8 + 1e-7}, {0.5, 0.9}, {0.1, 0.9}});
-        std::vector<Contour> contours{tracked(below, 0), tracked(above, 1)};
-        const sim::ExactMap comb = sim::Comb{{0.3, 0.0}, {0.3, 0.05}, 1, 0.0, 0.01};
-        QVERIFY(sim::separateLayers(contours, std::nullopt, &comb) > 0);
-        QCOMPARE(crossings(contours), std::size_t(0));
-        // The layer's two sides, at x: the top of the lower contour and the bottom of the upper one.
-        const auto sideAt = [](const Polygon& p, double x, bool lowest) {
-            double y = lowest ? INFINITY : -INFINITY;
-            for (Vec2 v : p)
-                if (std::abs(v.x - x) < 1e-9)
-                    y = lowest ? std::min(y, v.y) : std::max(y, v.y);
-            return y;
-        };
-        const auto layerAt = [&](double x) {
-            return sideAt(contours[1].positions, x, true) - sideAt(contours[0].positions, x, false);
-        };
-        const double width = pinchWidth(0.9);
-        qInfo("the layer, in pinch widths: %.2f at the tine, %.2f beside it, %.2f far off", layerAt(0.3) / width,
-              layerAt(0.32) / width, layerAt(0.12) / width);
-        QVERIFY(layerAt(0.3) > 8.0 * width);
-        QVERIFY(layerAt(0.32) > 2.2 * width && layerAt(0.32) < layerAt(0.3));
-        QVERIFY(layerAt(0.12) >= width && layerAt(0.12) < 2.0 * width);
-    }
-
     // A drop landing 1e-4 from ink's edge pushes it to about 1e-7 outside its rim (ρ²/2r); both
     // backends leave the width between them instead, with no crossing.
     void dropBesideInkLeavesTheWidth_data() { test::addBackendRows(); }
