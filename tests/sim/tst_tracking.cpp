@@ -97,6 +97,7 @@ private slots:
     void adaptiveSpacingSavesVertices();
 
     void areaCorrectionIsAUniformOffset();
+    void areaCorrectionHoldsASharpTip();
     void areaCorrectionHoldsBesideOtherInk_data() { test::addBackendRows(); }
     void areaCorrectionHoldsBesideOtherInk();
 
@@ -311,6 +312,26 @@ void TestTracking::areaCorrectionIsAUniformOffset()
     for (std::size_t i = 0; i < circle.size(); ++i)
         QVERIFY(glm::distance(corrected[i], circle[i]) <= coarse * (1.0 + 1e-9));
     QVERIFY(glm::distance(corrected[cluster + 1], circle[cluster + 1]) < 0.1 * glm::distance(circle[cluster + 1], circle[cluster]));
+}
+
+// A notch cut to a sharp tip, as a comb's crease folds a V: the tip and its two neighbours stay
+// where they are (the offset's direction there is no normal of the curve, and the V's sides lie
+// nearer each other than the offset beside the tip), and the rest makes the area up.
+void TestTracking::areaCorrectionHoldsASharpTip()
+{
+    const Vec2 tip(0.4, 0.25);
+    const Polygon notched = sim::resample({{0.2, 0.2}, {0.6, 0.2}, {0.6, 0.6}, {0.401, 0.6}, tip, {0.399, 0.6}, {0.2, 0.6}}, 0.01);
+    const auto at = std::find(notched.begin(), notched.end(), tip);
+    QVERIFY(at != notched.end());
+    const std::size_t n = notched.size(), t = std::size_t(at - notched.begin());
+    Polygon corrected = notched;
+    const double target = sim::signedArea(notched) + 1e-6;
+    sim::correctArea(corrected, target, 2.5e-4, std::vector<bool>(n, false), 1.0);
+    QVERIFY(std::abs(sim::signedArea(corrected) - target) < 1e-15);
+    for (std::size_t i : {(t + n - 1) % n, t, (t + 1) % n})
+        QCOMPARE(corrected[i], notched[i]);
+    QVERIFY(glm::distance(corrected[(t + 2) % n], notched[(t + 2) % n]) > 0.0);
+    QVERIFY(glm::distance(corrected.front(), notched.front()) > 0.0);
 }
 
 // Two inks a micrometre apart, the left one short of its area target by four micrometres of offset:
