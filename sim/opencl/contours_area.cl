@@ -10,11 +10,6 @@
 // The mode (host-defined codes): TERMS_AREA sums (2·area term, g_i·u_i, 2·area term of the u
 // polygon, 0), TERMS_WINDING (winding contribution of the edge around `point`, 0, 0, 0).
 
-VF_INLINE acc2 wide(float4 m)
-{
-    return (acc2)((acc_t)m.x, (acc_t)m.y);
-}
-
 VF_INLINE acc_t crossWide(acc2 a, acc2 b)
 {
     return a.x * b.y - a.y * b.x;
@@ -42,8 +37,11 @@ VF_INLINE bool turnsSharply(__global const float4 *motion, uint i, uint first, u
 
 VF_INLINE bool heldAt(HOLD_ARGS, __global const float4 *motion, uint i, uint first, uint count)
 {
-    return hold && (as_float(gap2[slot[i]]) < holdWithin2 || turnsSharply(motion, previousIn(i, first, count), first, count) ||
-                    turnsSharply(motion, i, first, count) || turnsSharply(motion, nextIn(i, first, count), first, count));
+    if (!hold)
+        return false;
+    const uint a = previousIn(i, first, count), b = nextIn(i, first, count);
+    return as_float(gap2[slot[i]]) < holdWithin2 || turnsSharply(motion, a, first, count) ||
+           turnsSharply(motion, i, first, count) || turnsSharply(motion, b, first, count);
 }
 
 // How the correction moves a vertex per unit λ: along the unit normal, shorter where the
@@ -57,7 +55,7 @@ VF_INLINE acc4 contourTerms(int mode, float2 point, float shortEdge, HOLD_ARGS, 
                             uint first, uint count)
 {
     const uint b = nextIn(i, first, count);
-    const acc2 p = wide(motion[i]), q = wide(motion[b]);
+    const acc2 p = exactly(motion[i].xy), q = exactly(motion[b].xy);
     if (mode == TERMS_WINDING) {
         // Sunday's crossing rule, as sim::windingNumber.
         const acc2 x = (acc2)((acc_t)point.x, (acc_t)point.y);
@@ -70,10 +68,11 @@ VF_INLINE acc4 contourTerms(int mode, float2 point, float shortEdge, HOLD_ARGS, 
         return (acc4)(w, 0, 0, 0);
     }
     // Products of floats are exact in double, so the area's shoelace terms carry no rounding there.
-    const acc2 g = areaGradient(wide(motion[previousIn(i, first, count)]), q);
+    const acc2 g = areaGradient(exactly(motion[previousIn(i, first, count)].xy), q);
     const acc2 u = heldAt(HOLD_PASS, motion, i, first, count) ? (acc2)(0) : correctionDirection(g, shortEdge);
+    const acc2 after = exactly(motion[nextIn(b, first, count)].xy);
     const acc2 uNext = heldAt(HOLD_PASS, motion, b, first, count) ? (acc2)(0)
-                                             : correctionDirection(areaGradient(p, wide(motion[nextIn(b, first, count)])), shortEdge);
+                                                                  : correctionDirection(areaGradient(p, after), shortEdge);
     return (acc4)(crossWide(p, q), dot(g, u), crossWide(u, uNext), 0);
 }
 
@@ -151,7 +150,8 @@ VF_KERNEL void correctArea(float shortEdge, HOLD_ARGS, __global const float4 *mo
         corrected[i] = m;
         return;
     }
-    const acc2 g = areaGradient(wide(motion[previousIn(i, first, count)]), wide(motion[nextIn(i, first, count)]));
-    const acc2 p = wide(m) + lambda[c] * correctionDirection(g, shortEdge);
+    const acc2 before = exactly(motion[previousIn(i, first, count)].xy), after = exactly(motion[nextIn(i, first, count)].xy);
+    const acc2 g = areaGradient(before, after);
+    const acc2 p = exactly(m.xy) + lambda[c] * correctionDirection(g, shortEdge);
     corrected[i] = (float4)((float)p.x, (float)p.y, m.zw);
 }
