@@ -407,16 +407,19 @@ Grid DeviceContours::Impl::grid() const
     return {cl_float(cell), (bits + 1) / 2, bits / 2};
 }
 
-// The proximity grid's cells, on no more buckets than the canvas has cells: the collapse builds it
-// several times a step, and the rest of the torus would hold little but empty buckets to scan.
+// The sweep grid answers queries about triangles of two short edges, far smaller than its cells, so
+// a bucket holds some sixteen positions on average (two cache lines of a contour's run through the
+// cell): finer cells would cost more to build, several times a step, than they save in queries.
+// Cells are square; their rows and columns wrap onto the buckets no more than the canvas needs.
 Grid DeviceContours::Impl::sweepGrid() const
 {
-    const Grid proximity = grid();
+    const std::size_t buckets = std::bit_ceil(std::max(vertices, minCapacity)) / 16;
+    const auto bits = cl_uint(std::countr_zero(buckets));
+    const double cell = std::sqrt(canvas.x * canvas.y / double(buckets));
     const auto bitsAcross = [&](double extent) {
-        return cl_uint(std::bit_width(std::size_t(std::ceil(extent / proximity.cellSize)) - 1));
+        return cl_uint(std::bit_width(std::size_t(std::ceil(extent / cell)) - 1));
     };
-    return {proximity.cellSize, std::min(proximity.columnBits, bitsAcross(canvas.x)),
-            std::min(proximity.rowBits, bitsAcross(canvas.y))};
+    return {cl_float(cell), std::min((bits + 1) / 2, bitsAcross(canvas.x)), std::min(bits / 2, bitsAcross(canvas.y))};
 }
 
 bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, bool startKnown)
