@@ -396,14 +396,17 @@ void DeviceContours::Impl::reserveContours(std::size_t needed)
     contourCapacity = grown;
 }
 
-// About one bucket per vertex, within the work array (which also holds the scan's total).
+// About one bucket per vertex, within the work array (which also holds the scan's total). Cells a
+// quarter of the search radius: a bucket's own pairs (nearestOtherPart) grow with the square of
+// what it holds, and dense ink, whose nearest other part is near, stays in its cell; the rest
+// searches up to four rings (nearestBeyond).
 Grid DeviceContours::Impl::grid() const
 {
     const std::size_t buckets =
         std::min(std::bit_ceil(std::max(vertices, minCapacity)), std::bit_floor(paddedCapacity - 1));
     const auto bits = cl_uint(std::countr_zero(buckets));
     // Few vertices spread over the canvas in fine cells would alias many cells onto each bucket.
-    const double cell = std::max(settings.proximityCell(), std::sqrt(canvas.x * canvas.y / double(buckets)));
+    const double cell = std::max(settings.proximityCell() / 2.0, std::sqrt(canvas.x * canvas.y / double(buckets)));
     return {cl_float(cell), (bits + 1) / 2, bits / 2};
 }
 
