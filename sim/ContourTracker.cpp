@@ -394,7 +394,7 @@ bool ContourTracker::advect(const Flow& flow, double t, double dt)
 
 std::size_t ContourTracker::cutPinches()
 {
-    const std::size_t cuts = sim::cutPinches(m_contours);
+    const std::size_t cuts = sim::cutPinches(m_contours, m_pinchGrid);
     if (cuts > 0) {
         m_vertexCount = 0;
         for (const Contour& c : m_contours)

@@ -92,6 +92,7 @@ private:
     std::size_t m_vertexCount = 0;
     ProximityGrid m_grid;
     VertexGrid m_vertexGrid;
+    EdgeGrid::Storage m_pinchGrid;
     PhaseClock* m_clock = nullptr;
 };
 

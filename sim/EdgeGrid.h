@@ -32,11 +32,20 @@ public:
     struct Edge {
         std::uint32_t contour, from;  // from vertex `from` to the next
     };
+    // The grid's arrays, kept by a caller that builds grids again and again (the pinch check): a
+    // grid of a million cells allocated afresh takes its pages from the system each time, and
+    // faulting them in cost five times the search (48k vertices: 19 ms a check against 3 ms).
+    struct Storage {
+        std::vector<std::uint32_t> start, fill;
+        std::vector<Edge> entries;
+    };
 
-    EdgeGrid(const std::vector<Outline>& contours, const std::vector<double>& widths,
+    EdgeGrid(const std::vector<Outline>& contours, const std::vector<double>& widths, Storage& storage,
              std::optional<Window> window = std::nullopt)
-        : m_widths(widths), m_window(window)
+        : m_widths(widths), m_window(window), m_start(storage.start), m_entries(storage.entries)
     {
+        m_start.clear();
+        m_entries.clear();
         Vec2 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
         double edgeLength = 0.0;
         std::size_t edges = 0;
@@ -61,7 +70,8 @@ public:
         for (std::size_t k = 1; k < m_start.size(); ++k)
             m_start[k] += m_start[k - 1];
         m_entries.resize(m_start.back());
-        std::vector<std::uint32_t> fill(m_start.begin(), m_start.end() - 1);
+        std::vector<std::uint32_t>& fill = storage.fill;
+        fill.assign(m_start.begin(), m_start.end() - 1);
         forEveryEdgeCell(contours, [&](std::size_t cell, Edge e) { m_entries[fill[cell]++] = e; });
     }
 
@@ -120,8 +130,8 @@ private:
     double m_cell = 1.0;
     Vec2 m_origin{0.0};
     int m_columns = 0, m_rows = 0;
-    std::vector<std::uint32_t> m_start;
-    std::vector<Edge> m_entries;
+    std::vector<std::uint32_t>& m_start;
+    std::vector<Edge>& m_entries;
 };
 
 } // namespace vf::sim

@@ -174,13 +174,13 @@ bool pinchCheckDue(double t0, double t1)
     return std::floor(t1 / pinchCheckPeriod) > std::floor(t0 / pinchCheckPeriod);
 }
 
-std::vector<ContourCut> findCuts(const std::vector<Outline>& contours)
+std::vector<ContourCut> findCuts(const std::vector<Outline>& contours, EdgeGrid::Storage& scratch)
 {
     const std::vector<double> widths = pinchWidths(contours);
     std::vector<ContourCut> cuts;
     if (contours.empty())
         return cuts;
-    const EdgeGrid grid(contours, widths);
+    const EdgeGrid grid(contours, widths, scratch);
     for (std::size_t k = 0; k < contours.size(); ++k) {
         const double width = widths[k];
         const std::vector<Pinch> pinches = pinchesOf(contours, grid, k, width);
@@ -226,9 +226,9 @@ std::vector<Outline> outlinesOf(const std::vector<Contour>& contours)
     return outlines;
 }
 
-std::size_t cutPinches(std::vector<Contour>& contours)
+std::size_t cutPinches(std::vector<Contour>& contours, EdgeGrid::Storage& scratch)
 {
-    const std::vector<ContourCut> cuts = findCuts(outlinesOf(contours));
+    const std::vector<ContourCut> cuts = findCuts(outlinesOf(contours), scratch);
     if (cuts.empty())
         return 0;
     std::size_t made = 0;

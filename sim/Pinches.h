@@ -51,8 +51,9 @@ struct ContourCut {
 // two), the one leaving the largest smaller loop first (a layer's root before its length), each
 // where its vertex and edge still lie in one loop and where the cut's two new edges would cross no
 // edge. A loop whose mean width (twice its area over its perimeter) is under twice the pinch width,
-// or with fewer than three vertices, is dropped and takes no more cuts.
-std::vector<ContourCut> findCuts(const std::vector<Outline>& contours);
+// or with fewer than three vertices, is dropped and takes no more cuts. The search's grid lives in
+// `scratch`, which a caller checking again and again keeps.
+std::vector<ContourCut> findCuts(const std::vector<Outline>& contours, EdgeGrid::Storage& scratch);
 
 // The area targets of a cut contour's kept loops: what the contour's target asks beyond their
 // present areas goes to each in proportion to its size, so the region keeps its ink.
@@ -60,6 +61,6 @@ std::vector<double> sharedTargets(double target, const std::vector<Loop>& kept);
 
 // findCuts on `contours`, each cut contour replaced by its kept loops, which keep their vertices'
 // previous positions and spacing. Returns how many cuts were made.
-std::size_t cutPinches(std::vector<Contour>& contours);
+std::size_t cutPinches(std::vector<Contour>& contours, EdgeGrid::Storage& scratch);
 
 } // namespace vf::sim

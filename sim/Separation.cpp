@@ -156,7 +156,8 @@ std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bo
     // Boxes twice as wide: an edge whose ends have moved (a width at most) is still found.
     std::vector<double> reach(widths.size());
     std::transform(widths.begin(), widths.end(), reach.begin(), [](double w) { return 2.0 * w; });
-    const EdgeGrid grid(contours, reach, within ? std::optional(withEdgesOf(contours, *within)) : std::nullopt);
+    EdgeGrid::Storage storage;
+    const EdgeGrid grid(contours, reach, storage, within ? std::optional(withEdgesOf(contours, *within)) : std::nullopt);
     // Where each vertex would go, from the positions before any move; then, in turn, the moves that
     // stay clean of the contours as moved so far.
     std::vector<VertexMove> wanted;

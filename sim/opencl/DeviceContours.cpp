@@ -272,6 +272,7 @@ struct DeviceContours::Impl {
     cl::Buffer weights;  // eq. 6's Gaussian, constant
     cl::Buffer status;   // statusWords uint
     int smoothingRadius;
+    EdgeGrid::Storage pinchGrid;  // the host's pinch search (cutPinches)
 
     std::array<Outlines, 2> staging;
     std::uint64_t requests = 0;
@@ -1010,7 +1011,7 @@ std::size_t DeviceContours::cutPinches()
 {
     return guarded([&] {
         // The search is on the host; the cuts are made on the device.
-        const std::vector<ContourCut> cuts = findCuts(m->readOutlines().outlines);
+        const std::vector<ContourCut> cuts = findCuts(m->readOutlines().outlines, m->pinchGrid);
         return cuts.empty() ? 0 : m->applyCuts(cuts);
     });
 }
