@@ -32,20 +32,19 @@ public:
     struct Edge {
         std::uint32_t contour, from;  // from vertex `from` to the next
     };
-    // The grid's arrays, kept by a caller that builds grids again and again (the pinch check): a
-    // grid of a million cells allocated afresh takes its pages from the system each time, and
-    // faulting them in cost five times the search (48k vertices: 19 ms a check against 3 ms).
+    // The grid's per-cell arrays, kept by a caller that builds grids again and again (the pinch
+    // check): a million cells allocated afresh take their pages from the system each time, and
+    // faulting them in cost five times the search (48k vertices: 19 ms a check against 3 ms). At
+    // most 8 MB; the entries, which grow with the ink, are the grid's own.
     struct Storage {
         std::vector<std::uint32_t> start, fill;
-        std::vector<Edge> entries;
     };
 
     EdgeGrid(const std::vector<Outline>& contours, const std::vector<double>& widths, Storage& storage,
              std::optional<Window> window = std::nullopt)
-        : m_widths(widths), m_window(window), m_start(storage.start), m_entries(storage.entries)
+        : m_widths(widths), m_window(window), m_start(storage.start)
     {
         m_start.clear();
-        m_entries.clear();
         Vec2 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
         double edgeLength = 0.0;
         std::size_t edges = 0;
@@ -131,7 +130,7 @@ private:
     Vec2 m_origin{0.0};
     int m_columns = 0, m_rows = 0;
     std::vector<std::uint32_t>& m_start;
-    std::vector<Edge>& m_entries;
+    std::vector<Edge> m_entries;
 };
 
 } // namespace vf::sim
