@@ -415,9 +415,11 @@ Grid DeviceContours::Impl::grid() const
 // a bucket holds some sixteen positions on average (two cache lines of a contour's run through the
 // cell): finer cells would cost more to build, several times a step, than they save in queries.
 // Cells are square; their rows and columns wrap onto the buckets no more than the canvas needs.
+// The buckets' starts fit the work array, as the proximity grid's.
 Grid DeviceContours::Impl::sweepGrid() const
 {
-    const std::size_t buckets = std::bit_ceil(std::max(vertices, minCapacity)) / 16;
+    const std::size_t buckets =
+        std::min(std::bit_ceil(std::max(vertices, minCapacity)) / 16, std::bit_floor(paddedCapacity - 1));
     const auto bits = cl_uint(std::countr_zero(buckets));
     const double cell = std::sqrt(canvas.x * canvas.y / double(buckets));
     const auto bitsAcross = [&](double extent) {
