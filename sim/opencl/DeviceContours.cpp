@@ -182,6 +182,7 @@ struct DeviceContours::Impl {
     std::size_t tiles() const { return roundUpToLocal(vertices + 1) / localSize; }
     Grid grid() const;
     Grid sweepGrid() const;
+    std::size_t bucketsFor(std::size_t perBucket) const;
     Motion flowMotion() const { return Motion{motionFlow, {}, {}, {}, cl_int(settings.timeRewinding), 0.0f, fp64}; }
     Motion mapMotion(cl_int kind, const Parameters& a, const Parameters& b, const Parameters& c = {}) const
     {
@@ -397,14 +398,19 @@ void DeviceContours::Impl::reserveContours(std::size_t needed)
     contourCapacity = grown;
 }
 
-// About one bucket per vertex, within the work array (which also holds the scan's total). Cells a
-// quarter of the search radius: a bucket's own pairs (nearestOtherPart) grow with the square of
-// what it holds, and dense ink, whose nearest other part is near, stays in its cell; the rest
-// searches up to four rings (nearestBeyond).
+// A power of two of buckets, about one per `perBucket` vertices, whose starts fit the work array
+// (which also holds the scan's total).
+std::size_t DeviceContours::Impl::bucketsFor(std::size_t perBucket) const
+{
+    return std::min(std::bit_ceil(std::max(vertices, minCapacity)) / perBucket, std::bit_floor(paddedCapacity - 1));
+}
+
+// About one bucket per vertex (bucketsFor). Cells a quarter of the search radius: a bucket's own
+// pairs (nearestOtherPart) grow with the square of what it holds, and dense ink, whose nearest
+// other part is near, stays in its cell; the rest searches up to four rings (nearestBeyond).
 Grid DeviceContours::Impl::grid() const
 {
-    const std::size_t buckets =
-        std::min(std::bit_ceil(std::max(vertices, minCapacity)), std::bit_floor(paddedCapacity - 1));
+    const std::size_t buckets = bucketsFor(1);
     const auto bits = cl_uint(std::countr_zero(buckets));
     // Few vertices spread over the canvas in fine cells would alias many cells onto each bucket.
     const double cell = std::max(settings.proximityCell() / 2.0, std::sqrt(canvas.x * canvas.y / double(buckets)));
@@ -415,11 +421,9 @@ Grid DeviceContours::Impl::grid() const
 // a bucket holds some sixteen positions on average (two cache lines of a contour's run through the
 // cell): finer cells would cost more to build, several times a step, than they save in queries.
 // Cells are square; their rows and columns wrap onto the buckets no more than the canvas needs.
-// The buckets' starts fit the work array, as the proximity grid's.
 Grid DeviceContours::Impl::sweepGrid() const
 {
-    const std::size_t buckets =
-        std::min(std::bit_ceil(std::max(vertices, minCapacity)) / 16, std::bit_floor(paddedCapacity - 1));
+    const std::size_t buckets = bucketsFor(16);
     const auto bits = cl_uint(std::countr_zero(buckets));
     const double cell = std::sqrt(canvas.x * canvas.y / double(buckets));
     const auto bitsAcross = [&](double extent) {
