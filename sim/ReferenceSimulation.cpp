@@ -67,7 +67,7 @@ SimulationState ReferenceSimulation::snapshot() const
     SimulationState state;
     state.time = time();
     state.regionCount = m_regionCount;
-    state.contours = m_tracker.contours();
+    state.contours = settledContours(m_tracker.contours());
     if (m_fluid)
         state.fluid = m_fluid->state();
     state.pendingStylus = m_pendingStylus;

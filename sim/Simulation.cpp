@@ -61,6 +61,13 @@ void requireFluid(const FluidState& f)
 
 } // namespace
 
+std::vector<Contour> settledContours(std::vector<Contour> contours)
+{
+    for (Contour& c : contours)
+        c.previous = c.positions;
+    return contours;
+}
+
 void validateState(const SimulationState& state, std::size_t vertexLimit)
 {
     require(std::isfinite(state.time), "snapshot time must be a finite number");

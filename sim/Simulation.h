@@ -103,7 +103,10 @@ public:
     //
     // snapshot() takes everything that determines the steps to come: the time, the region count,
     // every contour with all its fields, the fluid's velocity and pressure warm start (fluid flows
-    // only), and stylus input given but not yet stepped. Blocking on OpenCL (a readback).
+    // only), and stylus input given but not yet stepped. Blocking on OpenCL (a readback). A
+    // contour's `previous` is taken as its positions (settledContours): every motion overwrites it
+    // at its start, so between steps it decides nothing, and equal to the positions it packs to
+    // nothing in a project file.
     //
     // restore() replaces the whole live state with `state`. After b.restore(a.snapshot()) on the
     // same backend and settings (OpenCL: the same device), b.snapshot() == a.snapshot() and both
@@ -152,6 +155,9 @@ protected:
 
 // Throws std::invalid_argument with a one-line message for settings no backend can run.
 void validateSettings(const SimulationSettings& settings);
+
+// `contours` with each one's `previous` set to its positions, as snapshot() takes them.
+std::vector<Contour> settledContours(std::vector<Contour> contours);
 
 // Throws std::invalid_argument with a one-line message for a state restore() must refuse (see
 // Simulation::restore), `vertexLimit` being the most vertices the simulation can hold.

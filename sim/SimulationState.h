@@ -26,7 +26,7 @@ struct FluidState {
 struct SimulationState {
     double time = 0.0;
     int regionCount = 0;
-    std::vector<Contour> contours;            // every field, `previous` and `targetArea` included
+    std::vector<Contour> contours;            // every field (`previous` as Simulation::snapshot takes it)
     std::optional<FluidState> fluid;          // absent for an analytic flow
     std::vector<StylusSegment> pendingStylus; // given but not yet stepped
 

@@ -3,6 +3,8 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 
 namespace vf::sim {
@@ -26,6 +28,15 @@ double discreteCurvature(Vec2 before, Vec2 at, Vec2 after)
     const Vec2 e0 = at - before, e1 = after - at, chord = after - before;
     const double denominator = std::sqrt(glm::dot(e0, e0) * glm::dot(e1, e1) * glm::dot(chord, chord));
     return denominator > 0.0 ? 2.0 * std::abs(e0.x * e1.y - e0.y * e1.x) / denominator : 0.0;
+}
+
+double roundedSpacing(double d)
+{
+    // In the bits: adding half of the last kept bit's value and clearing the rest rounds to nearest
+    // (a carry into the exponent gives the next power of two, as it should).
+    constexpr int dropped = 52 - spacingFractionBits;
+    const auto bits = std::bit_cast<std::uint64_t>(d);
+    return std::bit_cast<double>((bits + (std::uint64_t(1) << (dropped - 1))) & ~((std::uint64_t(1) << dropped) - 1));
 }
 
 namespace {
@@ -92,7 +103,7 @@ void computeSpacing(std::vector<Contour>& contours, const Flow& flow, double t,
         }
         smoothAlongContour(c.spacing, weights, scratch);
         for (double& d : c.spacing)
-            d = std::min(dMax, d + epsilon);
+            d = std::min(dMax, roundedSpacing(d + epsilon));
     }
 }
 

@@ -297,7 +297,8 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
     const std::string options =
         commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc + "2 -DVF_ACC4=" + acc + "4" +
         " -DVF_RECENTRE_CORRECTIONS=" + std::to_string(recentreCorrections) +
-        " -DVF_TIP_WIDTH=" + std::to_string(tipWidth) + "f" + contourCodeDefinitions();
+        " -DVF_TIP_WIDTH=" + std::to_string(tipWidth) + "f" +
+        " -DVF_SPACING_FRACTION_BITS=" + std::to_string(spacingFractionBits) + contourCodeDefinitions();
     const std::string source = joinedKernelSources({"flow.h.cl"}) + flowSource + "\n" +
                                joinedKernelSources({"workgroup.cl", "contours.cl", "contours_spacing.cl",
                                                     "contours_refine.cl", "contours_area.cl"});

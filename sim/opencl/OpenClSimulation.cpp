@@ -127,7 +127,7 @@ SimulationState OpenClSimulation::snapshot() const
     SimulationState state;
     state.time = m_time;
     state.regionCount = m_regionCount;
-    state.contours = m_contours->read();
+    state.contours = settledContours(m_contours->read());
     if (m_fluid)
         state.fluid = FluidState{m_fluid->readVelocity(), m_fluid->readPressure()};
     state.pendingStylus = m_pendingStylus;

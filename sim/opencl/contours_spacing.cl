@@ -397,8 +397,16 @@ VF_KERNEL void rawSpacing(FLOW_ARGS, __global const float4 *motion, CONTOUR_ARGS
     storeLanes(raw, g, n, maxSpacing * factor);
 }
 
-// Eq. 6 along the closed contour, then + ε and the clamp to d_max; launched over one work-item per
-// VF_LANES vertices.
+// d rounded to VF_SPACING_FRACTION_BITS bits after the binary point (sim/SpacingField.h's
+// roundedSpacing, in float).
+VF_INLINE floatv roundedSpacing(floatv d)
+{
+    const int dropped = 23 - VF_SPACING_FRACTION_BITS;
+    return as_float8((as_int8(d) + (intv)(1 << (dropped - 1))) & (intv)(~((1 << dropped) - 1)));
+}
+
+// Eq. 6 along the closed contour, then + ε, rounded, and the clamp to d_max; launched over one
+// work-item per VF_LANES vertices.
 VF_KERNEL void smoothSpacing(__global const float *raw, CONTOUR_ARGS, uint n, __constant float *weights, int radius,
                              float minSpacing, float maxSpacing, __global float *spacing)
 {
@@ -423,5 +431,5 @@ VF_KERNEL void smoothSpacing(__global const float *raw, CONTOUR_ARGS, uint n, __
         }
         s = VF_VLOAD(0, sums);
     }
-    storeLanes(spacing, g, n, fmin(maxSpacing, s + minSpacing));
+    storeLanes(spacing, g, n, fmin(maxSpacing, roundedSpacing(s + minSpacing)));
 }

@@ -2,6 +2,7 @@
 // other settings and the other backend, and refusing states that cannot run. On every backend.
 #include "Backends.h"
 #include "Flows.h"
+#include "sim/Comb.h"
 
 #include <glm/geometric.hpp>
 
@@ -210,7 +211,9 @@ void TestSnapshot::roundTripIsExact()
     QVERIFY2(state.fluid && largestMagnitude(state.fluid->velocity.u) > 0.01, "the pen must have stirred the fluid");
     QVERIFY(largestMagnitude(state.fluid->pressure) > 0.0);
     QCOMPARE(state.pendingStylus.size(), std::size_t(1));
-    QVERIFY2(state.contours[0].positions != state.contours[0].previous, "the contours must have moved");
+    QVERIFY2(original->contours()[0].positions != original->contours()[0].previous, "the contours must have moved");
+    for (const sim::Contour& c : state.contours)
+        QVERIFY2(c.previous == c.positions, "a snapshot takes previous positions as the positions");
 
     auto restored = test::makeBackend(backend, fluidSettings());
     restored->restore(state);
@@ -228,11 +231,14 @@ void TestSnapshot::restoredStepsOnIdentically()
     VF_REQUIRE_BACKEND(backend);
     auto original = stirredScene(backend, fluidSettings());
     const SimulationState state = original->snapshot();
-    // Stroke, drop and stroke again, on both: every path through a step after the restore.
+    // Stroke, drop, comb and stroke again, on both: every path through a step after the restore,
+    // the original from its live previous positions, the restored one from the settled ones.
     const auto goOn = [](sim::Simulation& s) {
         advance(s, 5);
         s.drop({0.3, 0.3}, 0.05);
-        advance(s, 5);
+        advance(s, 2);
+        QVERIFY(s.applyMap(sim::Comb{{0.2, 0.5}, {0.3, 0.52}, 2, 0.1, 0.02}));
+        advance(s, 3);
     };
     goOn(*original);
     auto restored = test::makeBackend(backend, fluidSettings());

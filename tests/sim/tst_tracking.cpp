@@ -7,6 +7,7 @@
 #include "sim/AreaCorrection.h"
 #include "sim/ContourTracker.h"
 #include "sim/Crossings.h"
+#include "sim/SpacingField.h"
 
 #include <glm/geometric.hpp>
 
@@ -14,6 +15,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 using namespace vf;
 using sim::Polygon;
@@ -95,6 +97,9 @@ private slots:
 
     void adaptiveSpacingSavesVertices_data();
     void adaptiveSpacingSavesVertices();
+
+    void spacingIsRounded_data();
+    void spacingIsRounded();
 
     void areaCorrectionIsAUniformOffset();
     void areaCorrectionHoldsASharpTip();
@@ -285,6 +290,37 @@ void TestTracking::adaptiveSpacingSavesVertices()
     QVERIFY2(adaptiveError <= uniformError, "adaptive spacing lost accuracy against uniform spacing");
     QVERIFY2(adaptive.size() <= 0.6 * uniform.size(),
              qPrintable(QStringLiteral("%1 adaptive vs %2 uniform vertices").arg(adaptive.size()).arg(uniform.size())));
+}
+
+void TestTracking::spacingIsRounded_data()
+{
+    test::addBackendRows();
+}
+
+// d_i keeps spacingFractionBits (10) bits after the binary point, rounded to nearest, on both
+// backends, and still follows the curve (adaptive spacing takes many values).
+void TestTracking::spacingIsRounded()
+{
+    QFETCH(QString, backend);
+    VF_REQUIRE_BACKEND(backend);
+    QCOMPARE(sim::spacingFractionBits, 10);
+    QCOMPARE(sim::roundedSpacing(0.75), 0.75);
+    QCOMPARE(sim::roundedSpacing(1.0 + std::ldexp(1.0, -12)), 1.0);                     // a quarter of the last bit: down
+    QCOMPARE(sim::roundedSpacing(1.0 + 3 * std::ldexp(1.0, -12)), 1.0 + std::ldexp(1.0, -10));  // three quarters: up
+    QCOMPARE(sim::roundedSpacing(2.0 - std::ldexp(1.0, -12)), 2.0);                     // up into the next power of two
+    QCOMPARE(sim::roundedSpacing(std::ldexp(1.0 + std::ldexp(1.0, -9), -8)), std::ldexp(1.0 + std::ldexp(1.0, -9), -8));
+
+    auto simulation = test::makeBackend(backend, test::singleVortex(8.0, 1.0 / 256, true));
+    simulation->addRegion({sim::circle({0.5, 0.75}, 0.15, 1.0 / 256)});
+    for (int step = 0; step < 20; ++step)
+        simulation->step(0.02);
+    std::set<double> values;
+    for (const sim::Contour& c : simulation->contours())
+        for (double d : c.spacing) {
+            QCOMPARE(sim::roundedSpacing(d), d);
+            values.insert(d);
+        }
+    QVERIFY2(values.size() > 20, qPrintable(QStringLiteral("%1 distinct spacings").arg(values.size())));
 }
 
 // The correction offsets a contour by one distance everywhere, whether its edges are fine or coarse
