@@ -273,7 +273,7 @@ void Canvas::paintInk(QSize deviceSize, double dpr)
 
     // From here on in device pixels, the unit of the level of detail.
     m_paths.setView(m_frame, toDevice(dpr), visibleDeviceRect(dpr));
-    painter.setTransform(QTransform::fromScale(1.0 / dpr, 1.0 / dpr));
+    painter.setTransform(QTransform::fromScale(1.0 / dpr, 1.0 / dpr).translate(m_paths.shift().x(), m_paths.shift().y()));
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setPen(Qt::NoPen);
     for (const model::RegionLook& look : m_regions)
@@ -401,11 +401,14 @@ void Canvas::paintSelection(QPainter& painter, double dpr)
     if (selected == m_regions.end() || !isShown(*selected))
         return;
     const QPainterPath& outline = m_paths.region(std::size_t(m_selected));
+    painter.save();
+    painter.translate(m_paths.shift());
     painter.setBrush(Qt::NoBrush);
     painter.setPen(QPen(Qt::white, 3.0 * dpr));
     painter.drawPath(outline);
     painter.setPen(QPen(palette().color(QPalette::Highlight).darker(130), 1.5 * dpr));
     painter.drawPath(outline);
+    painter.restore();
 }
 
 void Canvas::setSelectedRegion(int simIndex)

@@ -7,10 +7,20 @@ void RegionPaths::setView(std::shared_ptr<const model::Frame> frame, const Pixel
 {
     if (frame == m_frame && toDevice == m_toDevice && visible == m_visible)
         return;
+    const QRectF unshifted = visible.translated(-toDevice.dx, -toDevice.dy);
+    const bool pathsKept = frame == m_frame && toDevice.scale == m_toDevice.scale && m_pathArea.contains(unshifted);
     m_frame = std::move(frame);
     m_toDevice = toDevice;
     m_visible = visible;
-    m_regions.assign(m_frame ? m_frame->regions.size() : 0, Region{});
+    if (!pathsKept) {
+        m_regions.assign(m_frame ? m_frame->regions.size() : 0, Region{});
+        m_pathArea = unshifted.adjusted(-visible.width(), -visible.height(), visible.width(), visible.height());
+        return;
+    }
+    for (Region& region : m_regions) {
+        region.verticesBuilt = false;
+        region.vertices.reset();
+    }
 }
 
 const QPainterPath& RegionPaths::region(std::size_t simIndex)
@@ -20,9 +30,10 @@ const QPainterPath& RegionPaths::region(std::size_t simIndex)
         return *path;
     path.emplace();
     path->setFillRule(Qt::OddEvenFill);
+    const PixelMapping unshifted{m_toDevice.scale, 0.0, 0.0};
     QPolygonF kept;
     for (const sim::Polygon& contour : m_frame->regions[simIndex]) {
-        decimateContour(contour, m_toDevice, kLodTolerance, m_visible, kept);
+        decimateContour(contour, unshifted, kLodTolerance, m_pathArea, kept);
         if (kept.size() < 3)
             continue;  // no area to fill
         path->addPolygon(kept);

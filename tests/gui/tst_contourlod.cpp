@@ -1,12 +1,15 @@
 // ContourLod: a contour decimated for display keeps no more vertices than its pixels need, stays
 // within the documented distance of the original, stays closed, keeps its extreme points, and
-// disappears only when it lies outside the view.
+// disappears only when it lies outside the view. RegionPaths: panning draws the paths it built,
+// shifted, as they would be built for the panned view, and builds them again only past their area.
 #include "app/ContourLod.h"
+#include "app/RegionPaths.h"
 
 #include <QTest>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 using namespace vf;
@@ -158,6 +161,37 @@ private slots:
         decimateContour(sim::Polygon{{0.1, 0.2}, {0.3, 0.2}, {0.2, 0.2}}, m, kLodTolerance,
                         QRectF(0, 0, 1000, 1000), kept);
         QVERIFY(!kept.isEmpty());
+    }
+
+    void panningShiftsThePathsItBuilt()
+    {
+        auto frame = std::make_shared<model::Frame>();
+        frame->regions = {{sim::circle({0.5, 0.5}, 0.1, 0.001)}};  // 400..600 px at 1000 px a unit
+        const QRectF view(0, 0, 800, 600);
+        const PixelMapping at{1000.0, 0.0, 0.0}, panned{1000.0, 300.0, -250.0};
+        RegionPaths paths;
+        paths.setView(frame, at, view);
+        const QPainterPath built = paths.region(0);
+
+        // Shifted, it is what decimating for the panned view gives.
+        QPolygonF fresh;
+        decimateContour(frame->regions[0][0], panned, kLodTolerance, view, fresh);
+        const QPainterPath shifted = built.translated(300.0, -250.0);
+        QCOMPARE(shifted.elementCount(), qsizetype(fresh.size()) + 1);  // closed: the first point again
+        for (qsizetype i = 0; i < fresh.size(); ++i)
+            QVERIFY(std::hypot(shifted.elementAt(int(i)).x - fresh[i].x(), shifted.elementAt(int(i)).y - fresh[i].y()) < 1e-9);
+
+        // Panned within its area, the path is not built again: a contour changed in place (the
+        // app's frames never are) does not show.
+        frame->regions[0][0] = sim::circle({0.5, 0.5}, 0.05, 0.001);
+        paths.setView(frame, panned, view);
+        QCOMPARE(paths.shift(), QPointF(300.0, -250.0));
+        QVERIFY(paths.region(0) == built);
+        // Three views away, or at another zoom, it is.
+        paths.setView(frame, PixelMapping{1000.0, 3000.0, 0.0}, view);
+        QVERIFY(paths.region(0).isEmpty());  // the circle lies outside this view
+        paths.setView(frame, PixelMapping{2000.0, 0.0, 0.0}, QRectF(0, 0, 2000, 2000));
+        QVERIFY(std::abs(paths.region(0).boundingRect().width() - 200.0) < 1.0);  // the new circle
     }
 };
 
