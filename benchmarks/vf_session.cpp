@@ -180,12 +180,12 @@ int run(const Arguments& a)
     std::ostringstream phases;
     for (std::size_t p = 0; p < sim::phaseCount; ++p)
         phases << (p ? ", " : "") << '"' << sim::phaseNames[p] << "\": " << simulation.phaseSeconds()[p];
-    std::printf("{\"session\": \"%s\", \"seed\": %u, \"backend\": \"%s\", \"area_correction\": %s, "
+    std::printf("{\"session\": \"%s\", \"seed\": %u, \"backend\": \"%s\", \"device\": \"%s\", \"area_correction\": %s, "
                 "\"steps\": %lld, \"substeps\": %lld, \"pinches_cut\": %lld, "
                 "\"seconds\": %.4f, \"vertex_steps\": %lld, \"vertex_steps_per_second\": %.1f, \"peak_vertices\": %zu, "
                 "\"end_vertices\": %zu, \"peak_rss_bytes\": %ld, \"limit_reached\": %s, \"phase_seconds\": {%s}, "
                 "\"phases_total\": %.4f, \"first_crossing_step\": %lld, \"worst_area_error\": %.3g}\n",
-                a.session.c_str(), a.seed, simulation.backendName().c_str(),
+                a.session.c_str(), a.seed, simulation.backendName().c_str(), simulation.description().c_str(),
                 simulation.settings().tracking.areaCorrection ? "true" : "false", (long long)step, (long long)substeps, (long long)pinchesCut,
                 seconds, (long long)vertexSteps, double(vertexSteps) / seconds, peak, simulation.vertexCount(),
                 peakRss, limit ? "true" : "false", phases.str().c_str(), phaseTotal,
