@@ -199,6 +199,7 @@ struct DeviceContours::Impl {
         bool withinBudget = true;
         bool changed = false;  // the scanned vertex count differs from the current one
         cl_uint flags = 0;     // FLAG_SHORT_EDGE(colour), FLAG_RECENTRED, FLAG_SPLIT_CAPPED
+        cl_uint across = 0;    // a collapse decision's recentrings into another bucket of the sweep grid
         std::size_t total = 0; // the scanned vertex count
     };
     Pass countSplits(const FlowBinding& flow, const Motion& motion);
@@ -256,6 +257,8 @@ struct DeviceContours::Impl {
     cl::Buffer tileOffset;  // uint per vertex: offset within its tile, from the counting kernels
     cl::Buffer work;        // uint per vertex: grid bucket counts, then starts
     cl::Buffer actions;     // uint per vertex: what a collapse pass does with each vertex
+    cl::Buffer sweepEntries;  // float2 per vertex: the collapse's sweep grid (buildSweepGrid())
+    cl::Buffer sweepOverflow;  // sweepOverflowCapacity float2: its overflow list
     cl::Buffer tileTotals;  // one acc4 per tile: uint, acc_t or acc4 totals, as the pass needs
     cl::Buffer tileActive;  // uint per tile: refinement looks at its vertices (contours_refine.cl)
     // uint per tile: where the next pass looks, marked by a counting kernel (tileMarks, where
@@ -329,6 +332,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
     std::vector<float> w(exact.begin(), exact.end());
     weights = cl::Buffer(device.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, w.size() * sizeof(float), w.data());
     status = buffer(statusWords * sizeof(cl_uint));
+    sweepOverflow = buffer(sweepOverflowCapacity * sizeof(cl_float2));
 }
 
 VertexSet DeviceContours::Impl::vertexSet(std::size_t size) const
@@ -371,6 +375,7 @@ bool DeviceContours::Impl::reserve(std::size_t needed)
     tileOffset = buffer(paddedCapacity * sizeof(cl_uint));
     work = buffer(paddedCapacity * sizeof(cl_uint));
     actions = buffer(paddedCapacity * sizeof(cl_uint));
+    sweepEntries = buffer(paddedCapacity * sizeof(cl_float2));
     tileTotals = buffer((paddedCapacity / localSize + 1) * 4 * accSize);
     tileActive = buffer((paddedCapacity / localSize + 1) * sizeof(cl_uint));
     tileMarks = buffer((paddedCapacity / localSize + 1) * sizeof(cl_uint));
@@ -512,16 +517,17 @@ void DeviceContours::Impl::buildGrid(const Grid& g)
     queue.enqueueFillBuffer(back.contour, radius * radius, 0, vertices * sizeof(cl_float));
 }
 
-// Every vertex's position in its bucket of g, in motionScratch(); the buckets' starts in `work`.
+// Every vertex's position in its bucket of g, in sweepEntries; the buckets' starts in `work`.
 void DeviceContours::Impl::buildSweepGrid(const Grid& g)
 {
     const auto n = cl_uint(vertices);
     queue.enqueueFillBuffer(work, cl_uint(0), 0, (g.buckets() + 1) * sizeof(cl_uint));
     launch(queue, sweepGridPass, laneGroups(vertices), front.motion, n, g, cl_int(0), work, tileOffset,
-           motionScratch());
+           sweepEntries);
     countScan.exclusive(work, g.buckets() + 1);
     launch(queue, sweepGridPass, laneGroups(vertices), front.motion, n, g, cl_int(1), work, tileOffset,
-           motionScratch());
+           sweepEntries);
+    queue.enqueueFillBuffer(status, cl_uint(0), statusOverflow * sizeof(cl_uint), sizeof(cl_uint));
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,
@@ -571,7 +577,8 @@ void DeviceContours::Impl::clearMarks(cl::Buffer& marks)
 
 void DeviceContours::Impl::clearPassFlags()
 {
-    queue.enqueueFillBuffer(status, cl_uint(0), statusPass * sizeof(cl_uint), sizeof(cl_uint));
+    static_assert(statusAcross == statusPass + 1);
+    queue.enqueueFillBuffer(status, cl_uint(0), statusPass * sizeof(cl_uint), 2 * sizeof(cl_uint));
 }
 
 // One scalar and the status come back: the only synchronisation of a pass.
@@ -585,7 +592,7 @@ DeviceContours::Impl::Pass DeviceContours::Impl::readPass()
         throw std::runtime_error("the flow moved a contour vertex to a non-finite position");
     if (words[statusSticky] & flagSplitMismatch)
         throw std::logic_error("DeviceContours: the split count and scatter kernels disagree");
-    return {true, total != vertices, words[statusPass], total};
+    return {true, total != vertices, words[statusPass], words[statusAcross], total};
 }
 
 // After a scatter into `back` that marked the tiles to look at next in tileMarksMoved: contours
@@ -624,7 +631,7 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
     }
     if (pass.total > capacity || pass.total > settings.maxVertices) {
         std::swap(tileActive, tileMarks);
-        return {false, false, pass.flags, vertices};
+        return {false, false, pass.flags, 0, vertices};
     }
     clearMarks(tileMarksMoved);
     launch(queue, splitScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing, front.contour,
@@ -636,40 +643,49 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
 
 // The colour classes in `colours` (bit c for colour c) in turn, each a compaction of its deletions
 // (or, with none, recentring in place). Each decision pass also says which later colours still
-// touch short edges, and checks its removals against the sweep grid (sweepGrid()) built again on
-// the positions it starts from (sweepsInk in contours_refine.cl). Leaves in tileActive the tiles the
-// next pass looks at.
+// touch short edges, and checks its removals against the sweep grid (sweepGrid()) of the positions
+// it starts from (sweepsInk in contours_refine.cl). Deletions and recentrings move their entries
+// in the grid (moveSweepEntry), so it is built again only when its overflow list would fill.
+// Leaves in tileActive the tiles the next pass looks at.
 bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours)
 {
     bool changed = false;
     const Grid g = sweepGrid();
-    bool gridCurrent = false;  // a pass that changes nothing leaves the sweep grid as it found it
+    std::optional<cl_uint> overflowing;  // the overflow list's length while the grid is current
     for (cl_uint colour = 0; colour < 3; ++colour) {
         if (!(colours & (flagShortEdge0 << colour)))
             continue;
-        if (!gridCurrent)
+        if (!overflowing) {
             buildSweepGrid(g);
+            overflowing = 0;
+        }
         clearPassFlags();
         clearMarks(tileMarks);
-        launch(queue, collapseDecide, laneGroups(vertices + 1), flow, motion, g, work, motionScratch(), front.motion,
-               front.spacing, front.contour, contourOffset, contourCount, cl_uint(vertices), colour, tileActive,
-               tileMarks, actions, tileOffset, tileTotals, cl_uint(tiles()), status);
+        launch(queue, collapseDecide, laneGroups(vertices + 1), flow, motion, g, work, sweepEntries, sweepOverflow,
+               *overflowing, front.motion, front.spacing, front.contour, contourOffset, contourCount,
+               cl_uint(vertices), colour, tileActive, tileMarks, actions, tileOffset, tileTotals, cl_uint(tiles()),
+               status);
         countScan.exclusive(tileTotals, tiles() + 1);
         const Pass pass = readPass();
         if (pass.changed) {
             clearMarks(tileMarksMoved);
             launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing,
                    front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions, tileOffset,
-                   tileTotals, motionScratch(), back.spacing, back.contour, tileMarksMoved);
+                   tileTotals, motionScratch(), back.spacing, back.contour, tileMarksMoved, g, work, sweepEntries,
+                   sweepOverflow, status);
             adopt(pass.total);
         } else {
             if (pass.flags & flagRecentred)
                 launch(queue, recentreInPlace, laneGroups(vertices), flow, motion, front.motion, front.spacing,
-                       front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions);
+                       front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions, g, work,
+                       sweepEntries, sweepOverflow, status);
             std::swap(tileActive, tileMarks);
         }
-        gridCurrent = !pass.changed && !(pass.flags & flagRecentred);
-        changed = changed || !gridCurrent;
+        if (pass.across > sweepOverflowCapacity - *overflowing)
+            overflowing.reset();
+        else
+            *overflowing += pass.across;
+        changed = changed || pass.changed || (pass.flags & flagRecentred) != 0;
         colours = pass.flags & flagsShortEdge;
     }
     return changed;
@@ -1106,11 +1122,11 @@ void DeviceContours::setPhaseClock(PhaseClock* clock)
 std::size_t DeviceContours::bytesPerVertex()
 {
     // Two vertex sets of float4 motion + float spacing + uint contour (24 bytes each), the tile
-    // offsets, the work array and the collapse actions (4 bytes each): 60. Per tile of 64 vertices
-    // one acc4 of 32 bytes and a uint flag (0.56 per vertex), and the scans' block totals (under
-    // 0.05): rounded up, 61.
+    // offsets, the work array and the collapse actions (4 bytes each), the sweep grid's float2
+    // entries: 68. Per tile of 64 vertices one acc4 of 32 bytes and a uint flag (0.56 per vertex),
+    // and the scans' block totals (under 0.05): rounded up, 69.
     constexpr std::size_t perSet = sizeof(cl_float4) + sizeof(float) + sizeof(cl_uint);
-    return 2 * perSet + 3 * sizeof(cl_uint) + 1;
+    return 2 * perSet + 3 * sizeof(cl_uint) + sizeof(cl_float2) + 1;
 }
 
 } // namespace vf::sim::opencl

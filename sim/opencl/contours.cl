@@ -32,7 +32,8 @@ typedef VF_ACC4 acc4;
 // strain with atomic_max on the bits of a non-negative float: both results are independent of the
 // order in which work-items arrive. STATUS_STICKY holds flags kept over the whole step
 // (FLAG_NON_FINITE, FLAG_SPLIT_MISMATCH), STATUS_PASS those of the current refinement pass
-// (FLAG_SHORT_EDGE, FLAG_RECENTRED, FLAG_SPLIT_CAPPED), STATUS_STRAIN the strain.
+// (FLAG_SHORT_EDGE, FLAG_RECENTRED, FLAG_SPLIT_CAPPED), STATUS_STRAIN the strain; STATUS_ACROSS
+// and STATUS_OVERFLOW are the collapse's (contours_refine.cl).
 #define FLAG_SHORT_EDGE(colour) (FLAG_SHORT_EDGE_0 << (colour))  // a short edge touches a vertex of that colour
 
 VF_DEFINE_LOCAL_SCAN(uint)

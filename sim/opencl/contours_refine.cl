@@ -410,8 +410,14 @@ VF_INLINE float turning(float2 before, float2 at, float2 after)
 // no corner of one inside the other have two pairs of crossing sides. In float a point counts as
 // outside only where one side's sign is sure against the other two's rounding, and a triangle over
 // more than VF_SWEEP_CELLS cells each way sweeps ink: an unsure case keeps the contour as it is.
-#define SWEEP_ARGS GRID_ARGS, __global const uint *bucketStart, __global const float2 *entries
-#define SWEEP_PASS GRID_PASS, bucketStart, entries
+#define SWEEP_ARGS                                                                                 \
+    GRID_ARGS, __global const uint *bucketStart, __global const float2 *entries, __global const float2 *overflow, \
+        uint overflowCount
+#define SWEEP_PASS GRID_PASS, bucketStart, entries, overflow, overflowCount
+#define MOVING_SWEEP_ARGS                                                                                         \
+    GRID_ARGS, __global const uint *bucketStart, __global float2 *entries, __global float2 *overflow,            \
+        __global uint *status
+#define MOVING_SWEEP_PASS GRID_PASS, bucketStart, entries, overflow, status
 #define VF_SWEEP_CELLS 4
 
 // The sweep grid, by counting sort as the proximity grid's, of positions only: launched once to
@@ -434,6 +440,44 @@ VF_KERNEL void sweepGridPass(__global const float4 *motion, uint n, GRID_ARGS, i
         entries[bucketCountsThenStarts[bucket[k]] + rank[first + k]] = (float2)(xs[k], ys[k]);
 }
 
+// The bucket of p in the sweep grid, as bucketLanes finds it.
+VF_INLINE int sweepBucket(GRID_ARGS, float2 p)
+{
+    int bucket[VF_LANES];
+    bucketLanes(GRID_PASS, (floatv)(p.x), (floatv)(p.y), bucket);
+    return bucket[0];
+}
+
+// The sweep grid follows the vertices a collapse pass deletes or recentres (collapseScatter,
+// recentreInPlace), so that the next colour's pass checks against the positions it starts from
+// without the grid being built again. A deleted vertex's entry becomes SWEEP_FORGOTTEN, below every
+// triangle's box; a recentred vertex's entry takes its new position, or, where that lies in another
+// bucket, is forgotten and the position goes to the overflow list, which every check also reads.
+// The host counts those moves (STATUS_ACROSS, raised by the decisions) and builds the grid again
+// before the list would fill. An entry is claimed by a compare-and-swap of its x, so of equal
+// positions exactly one entry moves.
+#define SWEEP_FORGOTTEN (-FLT_MAX)
+
+VF_INLINE void moveSweepEntry(MOVING_SWEEP_ARGS, float2 from, float2 to)
+{
+    const int bucket = sweepBucket(GRID_PASS, from);
+    __global uint *words = (__global uint *)entries;
+    for (uint k = bucketStart[bucket], end = bucketStart[bucket + 1]; k < end; ++k)
+        if (entries[k].y == from.y &&
+            atomic_cmpxchg(&words[2 * k], as_uint(from.x), as_uint(SWEEP_FORGOTTEN)) == as_uint(from.x)) {
+            if (to.x == SWEEP_FORGOTTEN)
+                return;
+            if (sweepBucket(GRID_PASS, to) == bucket) {
+                entries[k] = to;
+                return;
+            }
+            const uint slot = atomic_inc(&status[STATUS_OVERFLOW]);
+            if (slot < VF_SWEEP_OVERFLOW)
+                overflow[slot] = to;
+            return;
+        }
+}
+
 // Twice the signed area of from, to, p, and in *slack a bound on its rounding.
 VF_INLINE float sideOf(float2 from, float2 to, float2 p, float *slack)
 {
@@ -451,6 +495,13 @@ VF_INLINE bool surelyOutside(float2 a, float2 b, float2 c, float2 p)
     return left && right;
 }
 
+VF_INLINE bool inkAt(float2 p, float2 low, float2 high, float2 a, float2 b, float2 c, float2 skip)
+{
+    if (any(p < low) || any(p > high) || all(p == a) || all(p == b) || all(p == c) || all(p == skip))
+        return false;
+    return !surelyOutside(a, b, c, p);
+}
+
 VF_INLINE bool sweepsInk(SWEEP_ARGS, float2 a, float2 b, float2 c, float2 skip)
 {
     const float2 low = fmin(a, fmin(b, c)), high = fmax(a, fmax(b, c));
@@ -462,19 +513,19 @@ VF_INLINE bool sweepsInk(SWEEP_ARGS, float2 a, float2 b, float2 c, float2 skip)
     for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
             const uint bucket = ((uint)(y & rowMask) << columnBits) + (uint)(x & columnMask);
-            for (uint k = bucketStart[bucket], end = bucketStart[bucket + 1]; k < end; ++k) {
-                const float2 p = entries[k];
-                if (any(p < low) || any(p > high) || all(p == a) || all(p == b) || all(p == c) || all(p == skip))
-                    continue;
-                if (!surelyOutside(a, b, c, p))
+            for (uint k = bucketStart[bucket], end = bucketStart[bucket + 1]; k < end; ++k)
+                if (inkAt(entries[k], low, high, a, b, c, skip))
                     return true;
-            }
         }
+    for (uint k = 0; k < overflowCount; ++k)
+        if (inkAt(overflow[k], low, high, a, b, c, skip))
+            return true;
     return false;
 }
 
+// *leavesBucket: a recentring takes v into another bucket of the sweep grid.
 VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, SWEEP_ARGS, __global const float4 *motion,
-                              __global const float *spacing, uint v, uint first, uint count)
+                              __global const float *spacing, uint v, uint first, uint count, bool *leavesBucket)
 {
     const uint a = previousIn(v, first, count), b = nextIn(v, first, count);
     const float2 pa = motion[a].xy, pv = motion[v].xy, pb = motion[b].xy;
@@ -509,7 +560,10 @@ VF_INLINE uint collapseAction(FLOW_PARAMS, MOTION_ARGS, SWEEP_ARGS, __global con
     // topology does not need) rather than v being moved to the same place round after round.
     bool settles;
     const float2 x = recentred(FLOW_PASS, MOTION_PASS, motion[a], motion[b], da, db, &settles).xy;
-    return settles && !sweepsInk(SWEEP_PASS, pa, x, pb, pv) ? ACTION_RECENTRE : ACTION_KEEP;
+    if (!settles || sweepsInk(SWEEP_PASS, pa, x, pb, pv))
+        return ACTION_KEEP;
+    *leavesBucket = sweepBucket(GRID_PASS, x) != sweepBucket(GRID_PASS, pv);
+    return ACTION_RECENTRE;
 }
 
 VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, SWEEP_ARGS, __global const float4 *motion,
@@ -529,10 +583,12 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, SWEEP_ARGS, __global const
             continue;
         uint act = ACTION_KEEP;
         const uint c = contourOf[i], from = contourOffset[c], count = contourCount[c], k = i - from;
+        bool leavesBucket = false;
         if (count > 3 && collapseColour(k, count) == colour) {
-            act = collapseAction(FLOW_PASS, MOTION_PASS, SWEEP_PASS, motion, spacing, i, from, count);
+            act = collapseAction(FLOW_PASS, MOTION_PASS, SWEEP_PASS, motion, spacing, i, from, count, &leavesBucket);
+            bool unused = false;
             if (count == 4 && k >= 2 && act == ACTION_DELETE &&
-                collapseAction(FLOW_PASS, MOTION_PASS, SWEEP_PASS, motion, spacing, i - 2, from, count) ==
+                collapseAction(FLOW_PASS, MOTION_PASS, SWEEP_PASS, motion, spacing, i - 2, from, count, &unused) ==
                     ACTION_DELETE)
                 act = ACTION_KEEP;
         }
@@ -546,6 +602,8 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, SWEEP_ARGS, __global const
             atomic_or(&groupFlags, FLAG_SHORT_EDGE(collapseColour(k, count)));
         if (act == ACTION_RECENTRE)
             atomic_or(&groupFlags, FLAG_RECENTRED);
+        if (act == ACTION_RECENTRE && leavesBucket)
+            atomic_inc(&status[STATUS_ACROSS]);
         // A long edge (left by a recentring of an earlier colour) is for the next split pass.
         attention[lane] = shortEdge || tip || length > spacingIJ || act != ACTION_KEEP;
         if (attention[lane])
@@ -556,21 +614,25 @@ VF_KERNEL void collapseDecide(FLOW_ARGS, MOTION_ARGS, SWEEP_ARGS, __global const
     VF_END_COUNTING_PASS(kept, attention);
 }
 
-VF_INLINE void writeRecentred(FLOW_PARAMS, MOTION_ARGS, __global const float4 *inMotion,
+// Writes v recentred at `at`, and moves its entry in the sweep grid there.
+VF_INLINE void writeRecentred(FLOW_PARAMS, MOTION_ARGS, MOVING_SWEEP_ARGS, __global const float4 *inMotion,
                               __global const float *inSpacing, uint v, uint first, uint count,
                               __global float4 *outMotion, __global float *outSpacing, uint at)
 {
     const uint a = previousIn(v, first, count), b = nextIn(v, first, count);
+    const float2 from = inMotion[v].xy;
     bool settles;
-    outMotion[at] = recentred(FLOW_PASS, MOTION_PASS, inMotion[a], inMotion[b], inSpacing[a], inSpacing[b], &settles);
+    const float4 x = recentred(FLOW_PASS, MOTION_PASS, inMotion[a], inMotion[b], inSpacing[a], inSpacing[b], &settles);
+    outMotion[at] = x;
     outSpacing[at] = fmin(inSpacing[a], inSpacing[b]);
+    moveSweepEntry(MOVING_SWEEP_PASS, from, x.xy);
 }
 
 // Every vertex that acts needs attention, so a group with none stays as it is.
 VF_KERNEL void collapseScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __global const uint *contourOffset,
                                __global const uint *contourCount, uint n, TILE_ARGS, __global const uint *action,
                                __global const uint *tileOffset, __global const uint *tileBase, VERTEX_SET(out),
-                               __global uint *marks)
+                               __global uint *marks, MOVING_SWEEP_ARGS)
 {
     const uint g = get_global_id(0), first = VF_LANES * g;
     if (first >= n)
@@ -591,12 +653,15 @@ VF_KERNEL void collapseScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __g
             markTiles(marks, before, act == ACTION_DELETE ? before : scannedOffset(tileActive, tileOffset, tileBase, i),
                       after);
         }
-        if (act == ACTION_DELETE)
+        if (act == ACTION_DELETE) {
+            moveSweepEntry(MOVING_SWEEP_PASS, inMotion[i].xy, (float2)(SWEEP_FORGOTTEN, inMotion[i].y));
             continue;
+        }
         const uint at = scannedOffset(tileActive, tileOffset, tileBase, i);
         outContour[at] = c;
         if (act == ACTION_RECENTRE) {
-            writeRecentred(FLOW_PASS, MOTION_PASS, inMotion, inSpacing, i, from, count, outMotion, outSpacing, at);
+            writeRecentred(FLOW_PASS, MOTION_PASS, MOVING_SWEEP_PASS, inMotion, inSpacing, i, from, count,
+                           outMotion, outSpacing, at);
         } else {
             outMotion[at] = inMotion[i];
             outSpacing[at] = inSpacing[i];
@@ -608,7 +673,7 @@ VF_KERNEL void collapseScatter(FLOW_ARGS, MOTION_ARGS, CONST_VERTEX_SET(in), __g
 // (their neighbours do not act in the same pass, so nothing they read changes). One work-item per
 // VF_LANES vertices.
 VF_KERNEL void recentreInPlace(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, __global float *spacing, CONTOUR_ARGS,
-                               uint n, TILE_ARGS, __global const uint *action)
+                               uint n, TILE_ARGS, __global const uint *action, MOVING_SWEEP_ARGS)
 {
     const uint first = VF_LANES * get_global_id(0);
     if (first >= n || !tileActive[first / VF_LOCAL])
@@ -617,7 +682,7 @@ VF_KERNEL void recentreInPlace(FLOW_ARGS, MOTION_ARGS, __global float4 *motion, 
         if (action[i] != ACTION_RECENTRE)
             continue;
         const uint c = contourOf[i];
-        writeRecentred(FLOW_PASS, MOTION_PASS, motion, spacing, i, contourOffset[c], contourCount[c], motion, spacing,
-                       i);
+        writeRecentred(FLOW_PASS, MOTION_PASS, MOVING_SWEEP_PASS, motion, spacing, i, contourOffset[c],
+                       contourCount[c], motion, spacing, i);
     }
 }

@@ -355,7 +355,8 @@ void TestDeviceContours::initTestCase()
 
 void TestDeviceContours::bytesPerVertexWithinBudget()
 {
-    QVERIFY(DeviceContours::bytesPerVertex() <= 64);
+    // 61 bytes, and the collapse's sweep grid of 8, kept through a pass's colours (opencl-backend.md).
+    QVERIFY(DeviceContours::bytesPerVertex() <= 72);
 }
 
 void TestDeviceContours::compactionKeepsRingsOrdered()
