@@ -16,8 +16,6 @@ constexpr cl_uint flagNonFinite = 1, flagSplitMismatch = 2;  // sticky
 // Per pass. A short edge raises flagShortEdge0 << c for the colour c (0, 1 or 2) of its vertex in
 // the collapse passes.
 constexpr cl_uint flagShortEdge0 = 1, flagsShortEdge = 7 * flagShortEdge0, flagRecentred = 8, flagSplitCapped = 16;
-// The sweep grid's overflow list holds this many positions.
-constexpr cl_uint sweepOverflowCapacity = 1024;
 // The modes of contourTermTiles and contourTermSums (contours_area.cl) and of the motion.
 enum : cl_int { termsArea = 0, termsWinding = 1 };
 enum : cl_int { motionFlow = 0, motionDrop = 1, motionComb = 2, motionCircularComb = 3, motionSwirl = 4 };
@@ -35,7 +33,6 @@ inline std::string contourCodeDefinitions()
                                 {"STATUS_ACROSS", statusAcross, ""},
                                 {"STATUS_STRAIN", statusStrain, ""},
                                 {"STATUS_OVERFLOW", statusOverflow, ""},
-                                {"VF_SWEEP_OVERFLOW", sweepOverflowCapacity, "u"},
                                 {"FLAG_NON_FINITE", flagNonFinite, "u"},
                                 {"FLAG_SPLIT_MISMATCH", flagSplitMismatch, "u"},
                                 {"FLAG_SHORT_EDGE_0", flagShortEdge0, "u"},

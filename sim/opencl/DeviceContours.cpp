@@ -170,7 +170,8 @@ auto guarded(F&& f) -> decltype(f())
 } // namespace
 
 struct DeviceContours::Impl {
-    Impl(Device& device, const TrackingSettings& settings, Vec2 canvas, const std::string& flowSource);
+    Impl(Device& device, const TrackingSettings& settings, Vec2 canvas, const std::string& flowSource,
+         std::size_t sweepOverflow);
     // Copies into the staging buffers may still be running: they finish before the buffers go.
     ~Impl();
 
@@ -258,7 +259,7 @@ struct DeviceContours::Impl {
     cl::Buffer work;        // uint per vertex: grid bucket counts, then starts
     cl::Buffer actions;     // uint per vertex: what a collapse pass does with each vertex
     cl::Buffer sweepEntries;  // float2 per vertex: the collapse's sweep grid (buildSweepGrid())
-    cl::Buffer sweepOverflow;  // sweepOverflowCapacity float2: its overflow list
+    cl::Buffer sweepOverflow;  // overflowCapacity float2: the sweep grid's overflow list
     cl::Buffer tileTotals;  // one acc4 per tile: uint, acc_t or acc4 totals, as the pass needs
     cl::Buffer tileActive;  // uint per tile: refinement looks at its vertices (contours_refine.cl)
     // uint per tile: where the next pass looks, marked by a counting kernel (tileMarks, where
@@ -276,6 +277,7 @@ struct DeviceContours::Impl {
     cl::Buffer weights;  // eq. 6's Gaussian, constant
     cl::Buffer status;   // statusWords uint
     int smoothingRadius;
+    const cl_uint overflowCapacity;
     EdgeGrid::Storage pinchGrid;  // the host's pinch search (cutPinches)
 
     std::array<Outlines, 2> staging;
@@ -284,7 +286,7 @@ struct DeviceContours::Impl {
 };
 
 DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, Vec2 canvas_,
-                           const std::string& flowSource)
+                           const std::string& flowSource, std::size_t sweepOverflow_)
     : device(device_)
     , queue(device_.queue())
     , settings(settings_)
@@ -295,13 +297,15 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
     , countScan(device_, "uint", sizeof(cl_uint), commonBuildOptions(fp64))
     , sumScan(device_, fp64 ? "double" : "float", accSize, commonBuildOptions(fp64))
     , smoothingRadius(std::max(0, settings_.smoothingRadius))
+    , overflowCapacity(cl_uint(sweepOverflow_))
 {
     const std::string acc = fp64 ? "double" : "float";
     const std::string options =
         commonBuildOptions(fp64) + " -DVF_ACC=" + acc + " -DVF_ACC2=" + acc + "2 -DVF_ACC4=" + acc + "4" +
         " -DVF_RECENTRE_CORRECTIONS=" + std::to_string(recentreCorrections) +
         " -DVF_TIP_WIDTH=" + std::to_string(tipWidth) + "f" +
-        " -DVF_SPACING_FRACTION_BITS=" + std::to_string(spacingFractionBits) + contourCodeDefinitions();
+        " -DVF_SPACING_FRACTION_BITS=" + std::to_string(spacingFractionBits) +
+        " -DVF_SWEEP_OVERFLOW=" + std::to_string(overflowCapacity) + "u" + contourCodeDefinitions();
     const std::string source = joinedKernelSources({"flow.h.cl"}) + flowSource + "\n" +
                                joinedKernelSources({"workgroup.cl", "contours.cl", "contours_spacing.cl",
                                                     "contours_refine.cl", "contours_area.cl"});
@@ -332,7 +336,7 @@ DeviceContours::Impl::Impl(Device& device_, const TrackingSettings& settings_, V
     std::vector<float> w(exact.begin(), exact.end());
     weights = cl::Buffer(device.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, w.size() * sizeof(float), w.data());
     status = buffer(statusWords * sizeof(cl_uint));
-    sweepOverflow = buffer(sweepOverflowCapacity * sizeof(cl_float2));
+    sweepOverflow = buffer(std::max<std::size_t>(overflowCapacity, 1) * sizeof(cl_float2));
 }
 
 VertexSet DeviceContours::Impl::vertexSet(std::size_t size) const
@@ -681,7 +685,7 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
                        sweepEntries, sweepOverflow, status);
             std::swap(tileActive, tileMarks);
         }
-        if (pass.across > sweepOverflowCapacity - *overflowing)
+        if (pass.across > overflowCapacity - *overflowing)
             overflowing.reset();
         else
             *overflowing += pass.across;
@@ -898,8 +902,8 @@ DeviceContours::Impl::~Impl()
 }
 
 DeviceContours::DeviceContours(Device& device, const TrackingSettings& settings, Vec2 canvas,
-                               const std::string& flowSource)
-    : m(guarded([&] { return std::make_unique<Impl>(device, settings, canvas, flowSource); }))
+                               const std::string& flowSource, std::size_t sweepOverflow)
+    : m(guarded([&] { return std::make_unique<Impl>(device, settings, canvas, flowSource, sweepOverflow); }))
 {
 }
 

@@ -23,7 +23,11 @@ public:
     // (FlowBinding.h); flow.h.cl comes before it. `canvas` is the canvas size, where the ink mostly
     // lies: the proximity grid's cells are never so small that the canvas has more of them than
     // the grid has buckets. Throws DeviceError.
-    DeviceContours(Device& device, const TrackingSettings& settings, Vec2 canvas, const std::string& flowSource);
+    // `sweepOverflow`: the length of the collapse's sweep grid overflow list (opencl-backend.md,
+    // "Refinement by stream compaction"); any length gives the same result, a shorter one by
+    // building the grid more often.
+    DeviceContours(Device& device, const TrackingSettings& settings, Vec2 canvas, const std::string& flowSource,
+                   std::size_t sweepOverflow = sweepOverflowCapacity);
     ~DeviceContours();
 
     // As ContourTracker::addContour for each polygon (resampled so no edge exceeds d_max; area
@@ -91,6 +95,7 @@ public:
 
     // Bytes of device memory per vertex of capacity, all buffers that scale with vertices.
     static std::size_t bytesPerVertex();
+    static constexpr std::size_t sweepOverflowCapacity = 1024;
 
 private:
     struct Impl;

@@ -94,12 +94,13 @@ sim::TrackingSettings tracking(double maxSpacing, bool adaptive)
 // backends (ReferenceSimulation::step).
 class Pair {
 public:
-    Pair(sim::opencl::Device& device, FlowId flow, const sim::TrackingSettings& settings, bool withReference = true)
+    Pair(sim::opencl::Device& device, FlowId flow, const sim::TrackingSettings& settings, bool withReference = true,
+         std::size_t sweepOverflow = DeviceContours::sweepOverflowCapacity)
         : m_flowId(flow)
         , m_settings(settings)
         , m_host(hostFlow(flow).u, hostFlow(flow).v)
         , m_tracker(settings)
-        , m_contours(device, settings, sim::Vec2(1.0), deviceFlowSource)
+        , m_contours(device, settings, sim::Vec2(1.0), deviceFlowSource, sweepOverflow)
         , m_placeholder(device.context(), CL_MEM_READ_ONLY, sizeof(float))
         , m_withReference(withReference)
     {
@@ -320,6 +321,7 @@ private slots:
     void bytesPerVertexWithinBudget();
     void compactionKeepsRingsOrdered();
     void stretchAndReturnKeepsContoursValid();
+    void sweepGridOverflowChangesNothing();
 
     void rotationMatchesReference_data();
     void rotationMatchesReference();
@@ -407,6 +409,47 @@ void TestDeviceContours::stretchAndReturnKeepsContoursValid()
         QCOMPARE(crossings(contours), std::size_t(0));
     }
     qInfo() << "vertices: most" << most << "at the end" << pair.device().vertexCount();
+}
+
+void TestDeviceContours::sweepGridOverflowChangesNothing()
+{
+    // Rings and a drop contracted twelvefold at adaptive spacing: deletions and recentrings, some
+    // into another bucket of the collapse's sweep grid. With the grid's overflow list at its length
+    // and at one entry (read by the checks while it holds one, the grid built again when a pass
+    // would overfill it), the same vertices, bit for bit, at every 10th step.
+    std::vector<std::unique_ptr<Pair>> pairs;
+    for (std::size_t overflow : {DeviceContours::sweepOverflowCapacity, std::size_t(1)}) {
+        pairs.push_back(std::make_unique<Pair>(*m_device, FlowId::Contraction, tracking(1.0 / 1024, true), false,
+                                               overflow));
+        for (int k = 1; k <= 3; ++k)
+            pairs.back()->add(k - 1, sim::circle({0.5 + 0.02 * k, 0.5}, 0.1 * k, 1.0 / 1024));
+        pairs.back()->drop({0.45, 0.5}, 0.05, 3);
+    }
+    std::size_t most = 0;
+    for (int step = 1; step <= 50; ++step) {
+        for (auto& pair : pairs)
+            pair->step(0.05);
+        most = std::max(most, pairs[0]->device().vertexCount());
+        if (step % 10 != 0)
+            continue;
+        const std::vector<sim::Contour> expected = pairs[0]->device().read();
+        for (std::size_t k = 1; k < pairs.size(); ++k) {
+            const std::vector<sim::Contour> got = pairs[k]->device().read();
+            QCOMPARE(got.size(), expected.size());
+            for (std::size_t c = 0; c < got.size(); ++c)
+                QVERIFY2(got[c].positions == expected[c].positions,
+                         qPrintable(QStringLiteral("step %1, list %2, contour %3: %4 vertices against %5")
+                                        .arg(step)
+                                        .arg(k)
+                                        .arg(c)
+                                        .arg(got[c].positions.size())
+                                        .arg(expected[c].positions.size())));
+        }
+    }
+    QVERIFY2(pairs[0]->device().vertexCount() < most / 2,
+             qPrintable(QStringLiteral("%1 of at most %2 vertices left: few collapses")
+                            .arg(pairs[0]->device().vertexCount())
+                            .arg(most)));
 }
 
 void TestDeviceContours::rotationMatchesReference_data()
