@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -532,6 +533,10 @@ void DeviceContours::Impl::buildSweepGrid(const Grid& g)
     launch(queue, sweepGridPass, laneGroups(vertices), front.motion, n, g, cl_int(1), work, tileOffset,
            sweepEntries);
     queue.enqueueFillBuffer(status, cl_uint(0), statusOverflow * sizeof(cl_uint), sizeof(cl_uint));
+    if (overflowCapacity > 0) {
+        const cl_float2 forgotten{{-FLT_MAX, -FLT_MAX}};  // SWEEP_FORGOTTEN, in no triangle's box
+        queue.enqueueFillBuffer(sweepOverflow, forgotten, 0, overflowCapacity * sizeof(cl_float2));
+    }
 }
 
 // As ContourTracker::refine: split and collapse passes alternate until neither changes anything,
@@ -655,7 +660,9 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
 {
     bool changed = false;
     const Grid g = sweepGrid();
-    std::optional<cl_uint> overflowing;  // the overflow list's length while the grid is current
+    // While the grid is current, at least as many entries as its overflow list holds (a recentring
+    // into another bucket of a vertex already there takes no new one).
+    std::optional<cl_uint> overflowing;
     for (cl_uint colour = 0; colour < 3; ++colour) {
         if (!(colours & (flagShortEdge0 << colour)))
             continue;
@@ -676,13 +683,13 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
             launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing,
                    front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions, tileOffset,
                    tileTotals, motionScratch(), back.spacing, back.contour, tileMarksMoved, g, work, sweepEntries,
-                   sweepOverflow, status);
+                   sweepOverflow, *overflowing, status);
             adopt(pass.total);
         } else {
             if (pass.flags & flagRecentred)
                 launch(queue, recentreInPlace, laneGroups(vertices), flow, motion, front.motion, front.spacing,
                        front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions, g, work,
-                       sweepEntries, sweepOverflow, status);
+                       sweepEntries, sweepOverflow, *overflowing, status);
             std::swap(tileActive, tileMarks);
         }
         if (pass.across > overflowCapacity - *overflowing)

@@ -416,8 +416,8 @@ VF_INLINE float turning(float2 before, float2 at, float2 after)
 #define SWEEP_PASS GRID_PASS, bucketStart, entries, overflow, overflowCount
 #define MOVING_SWEEP_ARGS                                                                                         \
     GRID_ARGS, __global const uint *bucketStart, __global float2 *entries, __global float2 *overflow,            \
-        __global uint *status
-#define MOVING_SWEEP_PASS GRID_PASS, bucketStart, entries, overflow, status
+        uint overflowCount, __global uint *status
+#define MOVING_SWEEP_PASS GRID_PASS, bucketStart, entries, overflow, overflowCount, status
 #define VF_SWEEP_CELLS 4
 
 // The sweep grid, by counting sort as the proximity grid's, of positions only: launched once to
@@ -452,30 +452,44 @@ VF_INLINE int sweepBucket(GRID_ARGS, float2 p)
 // recentreInPlace), so that the next colour's pass checks against the positions it starts from
 // without the grid being built again. A deleted vertex's entry becomes SWEEP_FORGOTTEN, below every
 // triangle's box; a recentred vertex's entry takes its new position, or, where that lies in another
-// bucket, is forgotten and the position goes to the overflow list, which every check also reads.
-// The host counts those moves (STATUS_ACROSS, raised by the decisions) and builds the grid again
-// before the list would fill. An entry is claimed by a compare-and-swap of its x, so of equal
-// positions exactly one entry moves.
+// bucket, is forgotten and the position goes to the overflow list (appended at STATUS_OVERFLOW, at
+// most VF_SWEEP_OVERFLOW), where it then moves or is forgotten as in the grid. The decisions count
+// the recentrings into another bucket (STATUS_ACROSS); the host builds the grid again before the
+// list could fill, and gives the kernels the count of entries the list may hold (overflowCount),
+// those not yet written being SWEEP_FORGOTTEN (DeviceContours::Impl::buildSweepGrid). An entry is
+// claimed by a compare-and-swap of its x, so of equal positions exactly one moves.
 #define SWEEP_FORGOTTEN (-FLT_MAX)
+
+// Claims the entry at `from` among entries[begin, end): its x becomes SWEEP_FORGOTTEN. Its index, or end.
+VF_INLINE uint claimEntry(__global float2 *entries, uint begin, uint end, float2 from)
+{
+    __global uint *words = (__global uint *)entries;
+    for (uint k = begin; k < end; ++k)
+        if (entries[k].y == from.y &&
+            atomic_cmpxchg(&words[2 * k], as_uint(from.x), as_uint(SWEEP_FORGOTTEN)) == as_uint(from.x))
+            return k;
+    return end;
+}
 
 VF_INLINE void moveSweepEntry(MOVING_SWEEP_ARGS, float2 from, float2 to)
 {
     const int bucket = sweepBucket(GRID_PASS, from);
-    __global uint *words = (__global uint *)entries;
-    for (uint k = bucketStart[bucket], end = bucketStart[bucket + 1]; k < end; ++k)
-        if (entries[k].y == from.y &&
-            atomic_cmpxchg(&words[2 * k], as_uint(from.x), as_uint(SWEEP_FORGOTTEN)) == as_uint(from.x)) {
-            if (to.x == SWEEP_FORGOTTEN)
-                return;
-            if (sweepBucket(GRID_PASS, to) == bucket) {
-                entries[k] = to;
-                return;
-            }
-            const uint slot = atomic_inc(&status[STATUS_OVERFLOW]);
-            if (slot < VF_SWEEP_OVERFLOW)
-                overflow[slot] = to;
-            return;
-        }
+    const uint k = claimEntry(entries, bucketStart[bucket], bucketStart[bucket + 1], from);
+    if (k == bucketStart[bucket + 1]) {
+        const uint j = claimEntry(overflow, 0, overflowCount, from);
+        if (j < overflowCount && to.x != SWEEP_FORGOTTEN)
+            overflow[j] = to;
+        return;
+    }
+    if (to.x == SWEEP_FORGOTTEN)
+        return;
+    if (sweepBucket(GRID_PASS, to) == bucket) {
+        entries[k] = to;
+        return;
+    }
+    const uint slot = atomic_inc(&status[STATUS_OVERFLOW]);
+    if (slot < VF_SWEEP_OVERFLOW)
+        overflow[slot] = to;
 }
 
 // Twice the signed area of from, to, p, and in *slack a bound on its rounding.
