@@ -1,6 +1,7 @@
 // Refinement (paper §3.1, §3.3) by stream compaction; the split and collapse passes share their
-// tile bookkeeping and vertex helpers, so they stay in one file (about 620 lines, with the
-// collapse's sweep grid). Each pass decides, for every vertex at once, how many vertices it
+// tile bookkeeping and vertex helpers, so they stay in one file (about 700 lines, with the
+// collapse's sweep grid; the seam for a split is that grid, from sweepGridPass to sweepsInk, which
+// only the collapse kernels call). Each pass decides, for every vertex at once, how many vertices it
 // becomes (a split edge: 1 + the vertices inserted after it; a collapse: 0 or 1), scans those
 // counts and scatters the store into the other buffer, so every contour stays contiguous and in
 // order with no per-contour serial work and perfect balance.
