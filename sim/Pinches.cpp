@@ -11,7 +11,10 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <limits>
+#include <thread>
+#include <utility>
 
 namespace vf::sim {
 
@@ -129,12 +132,13 @@ std::vector<std::vector<std::uint32_t>> loopsAfterCuts(const std::vector<Outline
 }
 
 // Every pinch of contour k, the cut leaving the largest smaller loop first.
-std::vector<Pinch> pinchesOf(const std::vector<Outline>& contours, const EdgeGrid& grid, std::size_t k, double width)
+// Contour k's pinches among its vertices [from, to), in their order, appended to `found` with k.
+void pinchesOf(const std::vector<Outline>& contours, const EdgeGrid& grid, std::size_t k, double width,
+               std::size_t from, std::size_t to, std::vector<std::pair<std::size_t, Pinch>>& found)
 {
-    std::vector<Pinch> pinches;
     const Outline& q = contours[k];
     const std::size_t n = q.size();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = from; i < to; ++i) {
         grid.forEdgesNear(q[i], q[i], [&](EdgeGrid::Edge e) {
             const std::size_t j = e.from;
             if (e.contour != k || j == i || after(j, n) == i)
@@ -146,11 +150,56 @@ std::vector<Pinch> pinchesOf(const std::vector<Outline>& contours, const EdgeGri
                 squaredDistanceToSegment(p, a, b) >= width * width)
                 return;
             const std::size_t loop = (j + n - i) % n + 1;
-            pinches.push_back({i, j, std::min(loop, n - loop)});
+            found.push_back({k, {i, j, std::min(loop, n - loop)}});
         });
     }
-    std::stable_sort(pinches.begin(), pinches.end(),
-                     [](const Pinch& a, const Pinch& b) { return a.smallerLoop > b.smallerLoop; });
+}
+
+// Every contour's pinches, the one leaving the largest smaller loop first. The search only reads,
+// so the vertices of all contours are shared among threads in runs of consecutive ones (a session
+// may hold a few contours of a million vertices each); each run's pinches come back in order, so
+// the lists are those one thread would find. Fewer vertices than a run are searched on this one.
+std::vector<std::vector<Pinch>> pinchesOfEach(const std::vector<Outline>& contours, const EdgeGrid& grid,
+                                              const std::vector<double>& widths)
+{
+    constexpr std::size_t verticesPerRun = std::size_t(1) << 15;
+    std::size_t total = 0;
+    for (const Outline& q : contours)
+        total += q.size();
+    const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t runs = std::clamp<std::size_t>(total / verticesPerRun, 1, threads);
+    std::vector<std::vector<std::pair<std::size_t, Pinch>>> found(runs);
+    std::vector<std::exception_ptr> failures(runs);
+    const auto search = [&](std::size_t run) {
+        try {
+            const std::size_t begin = total * run / runs, end = total * (run + 1) / runs;
+            std::size_t first = 0;  // the run's index of contour k's vertex 0
+            for (std::size_t k = 0; k < contours.size() && first < end; ++k) {
+                const std::size_t from = std::max(begin, first), to = std::min(end, first + contours[k].size());
+                if (from < to)
+                    pinchesOf(contours, grid, k, widths[k], from - first, to - first, found[run]);
+                first += contours[k].size();
+            }
+        } catch (...) {
+            failures[run] = std::current_exception();
+        }
+    };
+    {
+        std::vector<std::jthread> helpers;
+        for (std::size_t run = 1; run < runs; ++run)
+            helpers.emplace_back(search, run);
+        search(0);
+    }
+    for (const std::exception_ptr& failure : failures)
+        if (failure)
+            std::rethrow_exception(failure);
+    std::vector<std::vector<Pinch>> pinches(contours.size());
+    for (const auto& run : found)
+        for (const auto& [k, pinch] : run)
+            pinches[k].push_back(pinch);
+    for (std::vector<Pinch>& list : pinches)
+        std::stable_sort(list.begin(), list.end(),
+                         [](const Pinch& a, const Pinch& b) { return a.smallerLoop > b.smallerLoop; });
     return pinches;
 }
 
@@ -181,12 +230,12 @@ std::vector<ContourCut> findCuts(const std::vector<Outline>& contours, EdgeGrid:
     if (contours.empty())
         return cuts;
     const EdgeGrid grid(contours, widths, scratch);
+    const std::vector<std::vector<Pinch>> pinches = pinchesOfEach(contours, grid, widths);
     for (std::size_t k = 0; k < contours.size(); ++k) {
         const double width = widths[k];
-        const std::vector<Pinch> pinches = pinchesOf(contours, grid, k, width);
-        if (pinches.empty())
+        if (pinches[k].empty())
             continue;
-        std::vector<std::vector<std::uint32_t>> loops = loopsAfterCuts(contours, grid, k, pinches, width);
+        std::vector<std::vector<std::uint32_t>> loops = loopsAfterCuts(contours, grid, k, pinches[k], width);
         if (loops.size() == 1)
             continue;
         ContourCut& cut = cuts.emplace_back();

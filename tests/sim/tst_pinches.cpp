@@ -192,6 +192,41 @@ private slots:
         QVERIFY2(gap >= 0.99 * pinchWidth(0.55), qPrintable(QString::number(gap)));
     }
 
+    // The search shares the vertices of all contours among threads once there are enough of them:
+    // a dozen necked shapes of 8,000 vertices each are cut exactly as each alone, searched on one
+    // thread, is (on a machine with one hardware thread, both searches take one).
+    void manyContoursAreCutAsEachAlone()
+    {
+        std::vector<Polygon> shapes;
+        for (int k = 0; k < 12; ++k) {
+            const Vec2 offset(0.3 * (k % 4), 0.3 * (k / 4));
+            Polygon shape = sim::resample(dumbbell(k % 3 == 0 ? 1e-4 : 1e-7), 2.3e-4);
+            for (Vec2& p : shape)
+                p = offset + 0.3 * p;
+            shapes.push_back(std::move(shape));
+        }
+        std::vector<sim::Outline> all(shapes.begin(), shapes.end());
+        QVERIFY(shapes[0].size() > 7000 && shapes[0].size() < 32768 / 2);
+        const std::vector<sim::ContourCut> together = sim::findCuts(all, grid);
+        QCOMPARE(together.size(), std::size_t(8));  // the necks of 1e-7, not those of 1e-4
+        std::size_t next = 0;
+        for (std::size_t k = 0; k < shapes.size(); ++k) {
+            const std::vector<sim::ContourCut> alone = sim::findCuts({sim::Outline(shapes[k])}, grid);
+            if (alone.empty())
+                continue;
+            QVERIFY(next < together.size());
+            const sim::ContourCut& cut = together[next++];
+            QCOMPARE(cut.contour, k);
+            QCOMPARE(cut.cuts, alone[0].cuts);
+            QCOMPARE(cut.kept.size(), alone[0].kept.size());
+            for (std::size_t i = 0; i < cut.kept.size(); ++i) {
+                QVERIFY(cut.kept[i].vertices == alone[0].kept[i].vertices);
+                QCOMPARE(cut.kept[i].area, alone[0].kept[i].area);
+            }
+        }
+        QCOMPARE(next, together.size());
+    }
+
     void checksComeOnceAPeriod()
     {
         const double period = sim::pinchCheckPeriod;
