@@ -206,7 +206,14 @@ struct DeviceContours::Impl {
     };
     Pass countSplits(const FlowBinding& flow, const Motion& motion);
     Pass splitPass(const FlowBinding& flow, const Motion& motion);
-    bool collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours);
+    // The collapse's sweep grid while it holds the present positions: its geometry, and at least as
+    // many entries as its overflow list holds (a recentring into another bucket of a vertex already
+    // there takes no new one).
+    struct SweepGrid {
+        Grid grid;
+        cl_uint overflowing = 0;
+    };
+    bool collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours, std::optional<SweepGrid>& sweep);
     void lookAtEveryTile();
     void clearMarks(cl::Buffer& marks);
     void clearPassFlags();
@@ -548,9 +555,14 @@ void DeviceContours::Impl::buildSweepGrid(const Grid& g)
 // The round's first split pass looks at every tile (everything moved); every later pass only at
 // the tiles the pass before it marked (contours_refine.cl): the others would find nothing to do,
 // so the result is the same as looking at all of them.
+//
+// The collapse's sweep grid is built for the positions the step has moved and split, and then kept
+// through every collapse pass after it until a split pass changes something (after the first
+// round, split passes of a step seldom do).
 bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
 {
     bool withinBudget = true, settled = false;
+    std::optional<SweepGrid> sweep;
     lookAtEveryTile();
     for (int round = 0; round < maxRounds && withinBudget && !settled; ++round) {
         const Pass split = [&] {
@@ -558,12 +570,14 @@ bool DeviceContours::Impl::refine(const FlowBinding& flow, const Motion& motion)
             return splitPass(flow, motion);
         }();
         withinBudget = split.withinBudget;
+        if (split.changed)
+            sweep.reset();
         // After a split the short edges flagged before it are stale: every colour gets a look.
         const cl_uint colours = split.changed ? flagsShortEdge : split.flags & flagsShortEdge;
         bool collapsed = false;
         if (colours != 0) {
             const PhaseClock::Scope timing(clock, Phase::Collapse);
-            collapsed = collapsePass(flow, motion, colours);
+            collapsed = collapsePass(flow, motion, colours, sweep);
         }
         settled = !collapsed && !(split.flags & flagSplitCapped);
     }
@@ -654,26 +668,25 @@ DeviceContours::Impl::Pass DeviceContours::Impl::splitPass(const FlowBinding& fl
 // (or, with none, recentring in place). Each decision pass also says which later colours still
 // touch short edges, and checks its removals against the sweep grid (sweepGrid()) of the positions
 // it starts from (sweepsInk in contours_refine.cl). Deletions and recentrings move their entries
-// in the grid (moveSweepEntry), so it is built again only when its overflow list would fill.
-// Leaves in tileActive the tiles the next pass looks at.
-bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours)
+// in the grid (moveSweepEntry), so `sweep`, where it holds one, is built again only when its
+// overflow list would fill. Leaves in tileActive the tiles the next pass looks at.
+bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& motion, cl_uint colours,
+                                        std::optional<SweepGrid>& sweep)
 {
     bool changed = false;
-    const Grid g = sweepGrid();
-    // While the grid is current, at least as many entries as its overflow list holds (a recentring
-    // into another bucket of a vertex already there takes no new one).
-    std::optional<cl_uint> overflowing;
     for (cl_uint colour = 0; colour < 3; ++colour) {
         if (!(colours & (flagShortEdge0 << colour)))
             continue;
-        if (!overflowing) {
-            buildSweepGrid(g);
-            overflowing = 0;
+        if (!sweep) {
+            sweep = SweepGrid{sweepGrid()};
+            buildSweepGrid(sweep->grid);
         }
+        const Grid g = sweep->grid;
+        const cl_uint overflowing = sweep->overflowing;
         clearPassFlags();
         clearMarks(tileMarks);
         launch(queue, collapseDecide, laneGroups(vertices + 1), flow, motion, g, work, sweepEntries, sweepOverflow,
-               *overflowing, front.motion, front.spacing, front.contour, contourOffset, contourCount,
+               overflowing, front.motion, front.spacing, front.contour, contourOffset, contourCount,
                cl_uint(vertices), colour, tileActive, tileMarks, actions, tileOffset, tileTotals, cl_uint(tiles()),
                status);
         countScan.exclusive(tileTotals, tiles() + 1);
@@ -683,19 +696,19 @@ bool DeviceContours::Impl::collapsePass(const FlowBinding& flow, const Motion& m
             launch(queue, collapseScatter, laneGroups(vertices), flow, motion, front.motion, front.spacing,
                    front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions, tileOffset,
                    tileTotals, motionScratch(), back.spacing, back.contour, tileMarksMoved, g, work, sweepEntries,
-                   sweepOverflow, *overflowing, status);
+                   sweepOverflow, overflowing, status);
             adopt(pass.total);
         } else {
             if (pass.flags & flagRecentred)
                 launch(queue, recentreInPlace, laneGroups(vertices), flow, motion, front.motion, front.spacing,
                        front.contour, contourOffset, contourCount, cl_uint(vertices), tileActive, actions, g, work,
-                       sweepEntries, sweepOverflow, *overflowing, status);
+                       sweepEntries, sweepOverflow, overflowing, status);
             std::swap(tileActive, tileMarks);
         }
-        if (pass.across > overflowCapacity - *overflowing)
-            overflowing.reset();
+        if (pass.across > overflowCapacity - overflowing)
+            sweep.reset();
         else
-            *overflowing += pass.across;
+            sweep->overflowing += pass.across;
         changed = changed || pass.changed || (pass.flags & flagRecentred) != 0;
         colours = pass.flags & flagsShortEdge;
     }
