@@ -131,7 +131,6 @@ std::vector<std::vector<std::uint32_t>> loopsAfterCuts(const std::vector<Outline
     return loops;
 }
 
-// Every pinch of contour k, the cut leaving the largest smaller loop first.
 // Contour k's pinches among its vertices [from, to), in their order, appended to `found` with k.
 void pinchesOf(const std::vector<Outline>& contours, const EdgeGrid& grid, std::size_t k, double width,
                std::size_t from, std::size_t to, std::vector<std::pair<std::size_t, Pinch>>& found)
