@@ -4,6 +4,7 @@
 // database, which needs a QGuiApplication: they get one on the offscreen platform.
 #include "app/CommandLine.h"
 #include "app/Commands.h"
+#include "sim/HeapPolicy.h"
 
 #include <QGuiApplication>
 #include <QTextStream>
@@ -56,6 +57,7 @@ int programOptions(const QStringList& arguments)
 
 int main(int argc, char** argv)
 {
+    vf::sim::keepLargeBlocksMapped();
     if (argc < 2 || !isHeadless(argv[1]))
         return vf::app::guiMain(argc, argv);
 

@@ -14,6 +14,7 @@
 #include "sessions/Sessions.h"
 #include "sim/Crossings.h"
 #include "sim/FluidFlow.h"
+#include "sim/HeapPolicy.h"
 #include "sim/ReferenceSimulation.h"
 #include "sim/opencl/OpenClSimulation.h"
 
@@ -242,6 +243,7 @@ int naive(const Arguments& a)
 
 int main(int argc, char** argv)
 {
+    vf::sim::keepLargeBlocksMapped();
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");  // the shape-design letters need fonts, not a display
     QGuiApplication app(argc, argv);

@@ -11,6 +11,7 @@
 // Stops after the last mark, or at the limit (default 1200 s) with the marks it reached.
 #include "app/Canvas.h"
 #include "app/MainWindow.h"
+#include "sim/HeapPolicy.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -56,6 +57,7 @@ void sendMouse(QWidget& widget, QEvent::Type type, QPointF at, Qt::MouseButtons 
 
 int main(int argc, char** argv)
 {
+    vf::sim::keepLargeBlocksMapped();
     QApplication app(argc, argv);
     QStringList args = QApplication::arguments().mid(1);
     if (args.isEmpty()) {

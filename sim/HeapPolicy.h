@@ -1,0 +1,18 @@
+#pragma once
+// How the process's heap hands memory back. Called first thing in main() by the programs that run
+// simulations (the app, the benchmarks), never by the library itself: it is a setting of the
+// whole process.
+
+namespace vf::sim {
+
+// glibc maps blocks above a threshold straight from the system and unmaps them when freed, but it
+// raises that threshold to the largest mapped block freed (up to 32 MiB). After the first large
+// grid is freed, the contours and grids that every step frees and allocates again, of one to a few
+// MiB, come from the heap instead, and the holes they leave stay resident. A fixed threshold of
+// 1 MiB keeps them mapped: the marbling session (seed 1) peaks at 199 MB resident instead of 245
+// on the reference, 251 instead of 284 on OpenCL, at the same speed. A smaller threshold saves a
+// little more and costs a tenth of the reference's time in page faults (docs/BENCHMARKS.md,
+// "Memory"). Does nothing on other C libraries.
+void keepLargeBlocksMapped();
+
+} // namespace vf::sim
