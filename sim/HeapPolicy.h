@@ -12,7 +12,7 @@ namespace vf::sim {
 // 1 MiB keeps them mapped: the marbling session (seed 1) peaks at 199 MB resident instead of 245
 // on the reference, 251 instead of 284 on OpenCL, at the same speed. A smaller threshold saves a
 // little more and costs a tenth of the reference's time in page faults (docs/BENCHMARKS.md,
-// "Memory"). Does nothing on other C libraries.
+// "Sessions"). Does nothing on other C libraries.
 void keepLargeBlocksMapped();
 
 } // namespace vf::sim
