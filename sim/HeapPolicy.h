@@ -9,10 +9,8 @@ namespace vf::sim {
 // raises that threshold to the largest mapped block freed (up to 32 MiB). After the first large
 // grid is freed, the contours and grids that every step frees and allocates again, of one to a few
 // MiB, come from the heap instead, and the holes they leave stay resident. A fixed threshold of
-// 1 MiB keeps them mapped: the marbling session (seed 1) peaks at 199 MB resident instead of 245
-// on the reference, 251 instead of 284 on OpenCL, at the same speed. A smaller threshold saves a
-// little more and costs a tenth of the reference's time in page faults (docs/BENCHMARKS.md,
-// "Sessions"). Does nothing on other C libraries.
+// 1 MiB keeps them mapped, at the same speed; a smaller one costs page faults (the figures:
+// docs/BENCHMARKS.md, "Sessions"). Does nothing on other C libraries.
 void keepLargeBlocksMapped();
 
 } // namespace vf::sim
