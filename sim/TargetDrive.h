@@ -37,9 +37,10 @@ namespace vf::sim {
 struct TargetDriveSettings {
     double strength = 400.0;  // v_f, 1/s²
     double attenuation = 10.0; // v_d, 1/s
-    // σ, canvas units. The ink's blur sets the scale at which the gathering term can turn ink and
-    // water over: at a cell or less, water caught between inks inside the target drains, where at
-    // a few cells it stays (docs/BENCHMARKS.md, "Target-driven design").
+    // σ, canvas units: the ink's blur and the target's narrowest. The ink's blur sets the scale at
+    // which the gathering term can turn ink and water over: at a cell or less, water caught between
+    // inks inside the target drains, where at a few cells it stays (docs/BENCHMARKS.md,
+    // "Target-driven design").
     double blur = 0.002;
     double gathering = 5.0;   // v_g, canvas units/s²: the gathering term's pull (see the top)
 
