@@ -122,12 +122,12 @@ Vec2 crossingPoint(const Segment& s, const Segment& t)
 // starts, then entries), so that only edges sharing a cell are compared.
 class SegmentGrid {
 public:
-    explicit SegmentGrid(const std::vector<const Polygon*>& polygons)
+    explicit SegmentGrid(const std::vector<Outline>& polygons)
     {
         Vec2 lo(INFINITY), hi(-INFINITY);
         double totalLength = 0.0;
         for (std::uint32_t p = 0; p < polygons.size(); ++p) {
-            const Polygon& poly = *polygons[p];
+            const Outline poly = polygons[p];
             const auto n = std::uint32_t(poly.size());
             for (std::uint32_t i = 0; i < n; ++i) {
                 const Segment s{poly[i], poly[(i + 1) % n], p, i, n};
@@ -214,6 +214,15 @@ private:
 
 std::vector<EdgeCrossing> findCrossings(const std::vector<const Polygon*>& polygons, std::size_t limit)
 {
+    std::vector<Outline> outlines;
+    outlines.reserve(polygons.size());
+    for (const Polygon* p : polygons)
+        outlines.emplace_back(*p);
+    return findOutlineCrossings(outlines, limit);
+}
+
+std::vector<EdgeCrossing> findOutlineCrossings(const std::vector<Outline>& outlines, std::size_t limit)
+{
     std::vector<EdgeCrossing> crossings;
     const auto meet = [&crossings](const Segment& s, const Segment& t) {
         if (!properlyIntersect(s, t))
@@ -224,7 +233,7 @@ std::vector<EdgeCrossing> findCrossings(const std::vector<const Polygon*>& polyg
         crossings.push_back({a.polygon, a.index, b.polygon, b.index, crossingPoint(a, b)});
         return true;
     };
-    SegmentGrid(polygons).forEachMeeting(meet, limit);
+    SegmentGrid(outlines).forEachMeeting(meet, limit);
     std::sort(crossings.begin(), crossings.end(), [](const EdgeCrossing& x, const EdgeCrossing& y) {
         return std::tie(x.polygonA, x.edgeA, x.polygonB, x.edgeB) < std::tie(y.polygonA, y.edgeA, y.polygonB, y.edgeB);
     });

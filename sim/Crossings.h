@@ -29,6 +29,9 @@ struct EdgeCrossing {
 // out, quadratic where thousands lie within one cell (isSimple does not share that limit).
 std::vector<EdgeCrossing> findCrossings(const std::vector<const Polygon*>& polygons,
                                         std::size_t limit = std::numeric_limits<std::size_t>::max());
+// The same over outlines where they lie (no copy of the vertices).
+std::vector<EdgeCrossing> findOutlineCrossings(const std::vector<Outline>& outlines,
+                                               std::size_t limit = std::numeric_limits<std::size_t>::max());
 std::size_t countCrossings(const std::vector<const Polygon*>& polygons);
 
 // No two edges cross or touch: besides proper crossings, no vertex lies on a non-neighbouring

@@ -16,8 +16,6 @@
 
 namespace vf::sim {
 
-using Outline = std::span<const Vec2>;
-
 // The vertex after i on a ring of n (no division: this runs for every vertex and edge).
 inline std::size_t after(std::size_t i, std::size_t n)
 {

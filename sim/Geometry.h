@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace vf::sim {
@@ -14,6 +15,8 @@ using Vec2 = glm::dvec2;
 
 // A closed contour: the last vertex connects back to the first. Canvas units, y down.
 using Polygon = std::vector<Vec2>;
+// A closed contour's vertices where they lie, such as a run of an array read back from a device.
+using Outline = std::span<const Vec2>;
 
 // The shoelace formula on the raw coordinates. Every contour the engine creates has positive area,
 // which with y pointing down means the vertices run clockwise as seen on screen.
