@@ -1,6 +1,7 @@
 #include "sim/ContourTracker.h"
 
 #include "sim/AreaCorrection.h"
+#include "sim/CrossedChords.h"
 #include "sim/Crossings.h"
 #include "sim/Pinches.h"
 #include "sim/SpacingField.h"
@@ -403,6 +404,12 @@ std::size_t ContourTracker::cutPinches()
     return cuts;
 }
 
+ExactMotion exactMotion(const ExactMap& map, double chordTolerance)
+{
+    return {[&map](Vec2 p) { return mapped(map, p); }, [&map](Vec2 a, Vec2 b) { return creaseCrossing(map, a, b); },
+            chordTolerance, true};
+}
+
 bool ContourTracker::drop(const DropPush& push, const Flow& flow, double t)
 {
     return applyMotion({push, {}, m_settings.chordTolerance}, flow, t);
@@ -410,9 +417,7 @@ bool ContourTracker::drop(const DropPush& push, const Flow& flow, double t)
 
 bool ContourTracker::applyMap(const ExactMap& map, const Flow& flow, double t)
 {
-    return applyMotion({[&map](Vec2 p) { return mapped(map, p); },
-                        [&map](Vec2 a, Vec2 b) { return creaseCrossing(map, a, b); }, m_settings.chordTolerance, true},
-                       flow, t);
+    return applyMotion(exactMotion(map, m_settings.chordTolerance), flow, t);
 }
 
 bool ContourTracker::applyMotion(const ExactMotion& motion, const Flow& flow, double t)
@@ -441,6 +446,10 @@ bool ContourTracker::refineAll(const ExactMotion& motion, const Flow& flow, doub
         withinBudget = refine(c, motion, budget) && withinBudget;
         requireFinite(c);  // split and recentred vertices come from the motion too
         total += c.positions.size();
+    }
+    if (motion.chordTolerance > 0.0) {  // an exact motion: its curves do not cross, nor must its chords
+        const PhaseClock::Scope timing(m_clock, Phase::Split);
+        total += splitCrossedChords(m_contours, motion, false);
     }
     m_vertexCount = total;
     if (m_settings.areaCorrection)

@@ -38,6 +38,9 @@ struct ExactMotion {
     bool keepsAreas = false;
 };
 
+// A tool's map as an exact motion, for refinement within `chordTolerance`; it keeps areas.
+ExactMotion exactMotion(const ExactMap& map, double chordTolerance);
+
 class ContourTracker {
 public:
     explicit ContourTracker(const TrackingSettings& settings);

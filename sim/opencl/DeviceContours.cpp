@@ -10,6 +10,9 @@
 #include "sim/opencl/DeviceContours.h"
 
 #include "sim/ContourTracker.h"
+#include "sim/CrossedChords.h"
+#include "sim/Crossings.h"
+#include "sim/Drop.h"
 #include "sim/Pinches.h"
 #include "sim/Separation.h"
 #include "sim/SpacingField.h"
@@ -191,7 +194,10 @@ struct DeviceContours::Impl {
         return Motion{kind, a, b, c, cl_int(settings.timeRewinding), cl_float(settings.chordTolerance), fp64};
     }
 
-    bool move(const FlowBinding& flow, const Motion& motion, bool startKnown = false);
+    // `exact`: the motion on the host, for an exact one (a drop, a tool's map).
+    bool move(const FlowBinding& flow, const Motion& motion, bool startKnown = false,
+              const ExactMotion* exact = nullptr);
+    void splitCrossedChords(const ExactMotion& motion);
     void computeSpacing(const FlowBinding& flow);
     void findNearestOtherParts(const Grid& grid);
     void buildGrid(const Grid& grid);
@@ -450,7 +456,8 @@ Grid DeviceContours::Impl::sweepGrid() const
     return {cl_float(cell), std::min((bits + 1) / 2, bitsAcross(canvas.x)), std::min(bits / 2, bitsAcross(canvas.y))};
 }
 
-bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, bool startKnown)
+bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, bool startKnown,
+                                const ExactMotion* exact)
 {
     startKnown = startKnown && strainSamplesKept && motion.kind == motionFlow;
     // The samples are read one last time: the advection moves the vertices they belong to.
@@ -465,6 +472,8 @@ bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, b
     }
     computeSpacing(flow);
     const bool withinBudget = refine(flow, motion);
+    if (exact)
+        splitCrossedChords(*exact);
     if (settings.areaCorrection) {
         const PhaseClock::Scope timing(clock, Phase::Area);
         correctAreas();
@@ -985,7 +994,8 @@ bool DeviceContours::advect(const FlowBinding& flow, bool startSampled)
 bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
 {
     return guarded([&] {
-        return m->move(flow, m->mapMotion(motionDrop, {{center.x, center.y, radius, 0.0}}, {}));
+        const ExactMotion onHost{DropPush{center, radius}, {}, m->settings.chordTolerance};
+        return m->move(flow, m->mapMotion(motionDrop, {{center.x, center.y, radius, 0.0}}, {}), false, &onHost);
     });
 }
 
@@ -995,7 +1005,8 @@ bool DeviceContours::applyMap(const ExactMap& map, const FlowBinding& flow)
         const std::optional<MapParameters> p = mapParameters(map);
         if (!p || m->vertices == 0)
             return true;
-        return m->move(flow, m->mapMotion(p->kind, p->a, p->b, p->c));
+        const ExactMotion onHost = exactMotion(map, m->settings.chordTolerance);
+        return m->move(flow, m->mapMotion(p->kind, p->a, p->b, p->c), false, &onHost);
     });
 }
 
@@ -1052,6 +1063,23 @@ DeviceContours::Impl::HostOutlines DeviceContours::Impl::readOutlines()
     for (std::size_t c = 0; c < s.offset.size(); ++c)
         host.outlines.emplace_back(host.positions.data() + s.offset[c], s.count[c]);
     return host;
+}
+
+// sim/CrossedChords.h, on the host: the positions are read back (8 bytes a vertex), which shows
+// that most motions crossed nothing; else the whole store is read, for the pre-images, and written
+// again where a chord was split.
+void DeviceContours::Impl::splitCrossedChords(const ExactMotion& motion)
+{
+    const PhaseClock::Scope timing(clock, Phase::Split);
+    if (findOutlineCrossings(readOutlines().outlines, 1).empty())
+        return;
+    Snapshot s;
+    enqueueSnapshot(s);
+    if (s.done())
+        s.done.wait();
+    std::vector<Contour> contours = toContours(s);
+    if (sim::splitCrossedChords(contours, motion, true) > 0)
+        place(contours, 0, 0);
 }
 
 std::size_t DeviceContours::cutPinches()

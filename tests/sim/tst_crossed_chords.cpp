@@ -1,0 +1,122 @@
+// The last guard of an exact motion (sim/CrossedChords): chords that cross where the curves they
+// depict do not are split until they no longer cross, on a made-up bend and on every backend.
+#include "Backends.h"
+#include "StillWater.h"
+#include "sim/CrossedChords.h"
+#include "sim/Crossings.h"
+#include "sim/ExactMap.h"
+
+#include <QTest>
+
+Q_DECLARE_METATYPE(vf::sim::ExactMap)
+
+using namespace vf;
+using sim::Contour;
+using sim::Vec2;
+
+namespace {
+
+// (x, y) → (x, y + x²): a shear that keeps areas and bends every horizontal line into a parabola,
+// so a long straight edge's chord misses its curve by up to a quarter of its squared length.
+Vec2 bend(Vec2 p) { return {p.x, p.y + p.x * p.x}; }
+
+// A contour at `polygon` before the bend, and bent.
+Contour bent(const sim::Polygon& polygon)
+{
+    Contour c;
+    c.previous = polygon;
+    for (const Vec2& p : polygon)
+        c.positions.push_back(bend(p));
+    c.spacing.assign(polygon.size(), 0.1);
+    return c;
+}
+
+std::size_t crossingsOf(const std::vector<Contour>& contours)
+{
+    std::vector<const sim::Polygon*> outlines;
+    for (const Contour& c : contours)
+        outlines.push_back(&c.positions);
+    return sim::countCrossings(outlines);
+}
+
+} // namespace
+
+class TestCrossedChords : public QObject {
+    Q_OBJECT
+private slots:
+    void splitsUntilTheChordsFollowTheCurves_data()
+    {
+        QTest::addColumn<bool>("floatPositions");
+        QTest::newRow("double") << false;
+        QTest::newRow("float") << true;
+    }
+    // Below, a square whose top is one edge from x = 1 to x = −1; 1e-3 above it, a layer whose
+    // bottom has a vertex at x = 0.3. Bent, the square's top is the chord y = 1 while the layer's
+    // vertex drops to y ≈ 0.09: its chords cross the square's. The curves lie 1e-3 apart.
+    void splitsUntilTheChordsFollowTheCurves()
+    {
+        QFETCH(bool, floatPositions);
+        std::vector<Contour> contours{bent({{-1.0, -1.0}, {1.0, -1.0}, {1.0, 0.0}, {-1.0, 0.0}}),
+                                      bent({{-1.0, 1e-3}, {0.3, 1e-3}, {1.0, 1e-3}, {1.0, 1.0}, {-1.0, 1.0}})};
+        QCOMPARE(crossingsOf(contours), std::size_t(2));
+        const sim::ExactMotion motion{bend, {}, 1e-7, true};
+        const std::size_t inserted = sim::splitCrossedChords(contours, motion, floatPositions);
+        QVERIFY(inserted > 0);
+        QCOMPARE(contours[0].positions.size() + contours[1].positions.size(), 9 + inserted);
+        QCOMPARE(crossingsOf(contours), std::size_t(0));
+        for (const Contour& c : contours) {  // every vertex on its curve, where it came from
+            QCOMPARE(c.previous.size(), c.positions.size());
+            QCOMPARE(c.spacing.size(), c.positions.size());
+            for (std::size_t i = 0; i < c.positions.size(); ++i)
+                QVERIFY(glm::distance(c.positions[i], bend(c.previous[i])) <= (floatPositions ? 1e-7 : 0.0));
+        }
+    }
+
+    // Two squares that overlap before the motion (one that moves nothing) keep their crossings: no
+    // split could undo them.
+    void leavesCrossingsThePreImagesHad()
+    {
+        const auto still = [](Vec2 p) { return p; };
+        std::vector<Contour> contours(2);
+        contours[0].positions = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
+        contours[1].positions = {{0.5, 0.5}, {1.5, 0.5}, {1.5, 1.5}, {0.5, 1.5}};
+        for (Contour& c : contours) {
+            c.previous = c.positions;
+            c.spacing.assign(4, 0.1);
+        }
+        QCOMPARE(crossingsOf(contours), std::size_t(2));
+        QCOMPARE(sim::splitCrossedChords(contours, {still, {}, 1e-7, true}, false), std::size_t(0));
+        QCOMPARE(crossingsOf(contours), std::size_t(2));
+    }
+
+    void pressedLayersDoNotCross_data()
+    {
+        test::addBackendColumn();
+        QTest::addColumn<sim::ExactMap>("map");
+        for (const QString& b : test::backendNames()) {
+            QTest::newRow(qPrintable(b + u" wavy comb"_qs))
+                << b << sim::ExactMap(sim::Comb{{0.1, 0.5}, {0.4, 0.5}, 4, 0.25, 0.03, 0.04, 0.3, 1.0});
+            QTest::newRow(qPrintable(b + u" circular comb"_qs))
+                << b << sim::ExactMap(sim::CircularComb{{0.5, 0.5}, 0.12, 3, 0.125, 0.02, 0.8});
+        }
+    }
+    // Six bands stacked 3e-8 apart, under a fraction of the chord tolerance, through a map: on
+    // OpenCL, whose float positions hold such a gap by a few roundings, the chords crossed (1 and 2
+    // crossings) before they were split.
+    void pressedLayersDoNotCross()
+    {
+        QFETCH(QString, backend);
+        QFETCH(sim::ExactMap, map);
+        VF_REQUIRE_BACKEND(backend);
+        auto simulation = test::stillWater(backend);
+        for (int k = 0; k < 6; ++k) {
+            const double y = 0.35 + k * (0.05 + 3e-8);
+            simulation->addRegion({sim::resample({{0.2, y}, {0.8, y}, {0.8, y + 0.05}, {0.2, y + 0.05}}, 0.004)});
+        }
+        QVERIFY(simulation->applyMap(map));
+        QCOMPARE(test::crossings(test::outlines(*simulation)), std::size_t(0));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestCrossedChords)
+#include "tst_crossed_chords.moc"
