@@ -19,11 +19,6 @@ bool preImagesCross(const std::vector<Contour>& contours, const EdgeCrossing& x)
     return orientation(a, b, c) * orientation(a, b, d) < 0 && orientation(c, d, a) * orientation(c, d, b) < 0;
 }
 
-Vec2 stored(Vec2 p, bool floatPositions)
-{
-    return floatPositions ? Vec2(float(p.x), float(p.y)) : p;
-}
-
 // Inserts a vertex into each of `edges` (sorted, distinct) of c: at the crease inside the edge's
 // pre-image where there is one, else at its middle, moved by the motion.
 void splitEdges(Contour& c, const std::vector<std::size_t>& edges, const ExactMotion& motion, bool floatPositions)
@@ -48,8 +43,8 @@ void splitEdges(Contour& c, const std::vector<std::size_t>& edges, const ExactMo
         std::optional<double> s = motion.crease ? motion.crease(a, b) : std::nullopt;
         if (!s || !(*s > 0.0 && *s < 1.0))
             s = 0.5;
-        const Vec2 start = stored(a + *s * (b - a), floatPositions);
-        out.positions.push_back(stored(motion.map(start), floatPositions));
+        const Vec2 start = storedPosition(a + *s * (b - a), floatPositions);
+        out.positions.push_back(storedPosition(motion.map(start), floatPositions));
         out.previous.push_back(start);
         out.spacing.push_back(std::min(c.spacing[i], c.spacing[j]));
     }

@@ -136,6 +136,16 @@ std::optional<double> wholeCrossing(double wa, double wb, double last)
     return (std::clamp(std::round(0.5 * (wa + wb)), first, final) - wa) / (wb - wa);
 }
 
+Vec2 storedPosition(Vec2 p, bool singlePrecision)
+{
+    if (!singlePrecision)
+        return p;
+    // Through volatile floats: GCC 12.2 at -O2 (Debian 12's) vectorizes the two conversions of a
+    // pair and then drops them, as if double(float(x)) were x.
+    const volatile float x = float(p.x), y = float(p.y);
+    return {x, y};
+}
+
 double directedHausdorffDistance(const Polygon& from, const Polygon& to)
 {
     double worst = 0.0;

@@ -100,12 +100,6 @@ Vec2 separated(const std::vector<Outline>& contours, const EdgeGrid& grid, const
     return length > widest ? p + widest / length * push : p + push;
 }
 
-// A position as it will be kept: on a device, in single precision, which is then what is checked.
-Vec2 stored(Vec2 p, bool singlePrecision)
-{
-    return singlePrecision ? Vec2(float(p.x), float(p.y)) : p;
-}
-
 // Whether vertex i of contour k may move to `to`: its two edges, so moved, meet no edge of any
 // contour but their own neighbours (at the vertex they share). `positions` holds the contours as
 // moved so far; no vertex has moved farther than its contour's width, which the grid's boxes allow.
@@ -165,7 +159,7 @@ std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bo
         for (std::size_t i = 0; i < contours[k].size(); ++i) {
             if (within && !within->holds(contours[k][i]))
                 continue;
-            if (const Vec2 to = stored(separated(contours, grid, widths, k, i), singlePrecision); to != contours[k][i])
+            if (const Vec2 to = storedPosition(separated(contours, grid, widths, k, i), singlePrecision); to != contours[k][i])
                 wanted.push_back({std::uint32_t(k), std::uint32_t(i), to});
         }
     if (wanted.empty())

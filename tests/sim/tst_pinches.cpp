@@ -172,6 +172,21 @@ private slots:
         QVERIFY(apart == before);
     }
 
+    // Moves meant for a device go where a float pair lies, so that what was checked is what the
+    // device keeps (an optimiser once dropped the rounding, and the device's contours then crossed).
+    void singlePrecisionMovesLandOnFloats()
+    {
+        const double third = 1.0 / 3.0;  // no float holds it, nor anything moved off it by a width
+        const Polygon below = outline({{0.1, third - 0.1}, {0.5, third - 0.1}, {0.5, third}, {0.1, third}});
+        const Polygon above = outline({{0.1, third + 1e-7}, {0.5, third + 1e-7}, {0.5, 0.9}, {0.1, 0.9}});
+        const std::vector<Contour> contours{tracked(below, 0), tracked(above, 1)};
+        const std::vector<sim::VertexMove> moves = sim::findSeparations(sim::outlinesOf(contours), true);
+        QVERIFY(!moves.empty());
+        for (const sim::VertexMove& m : moves)
+            QVERIFY2(double(float(m.to.x)) == m.to.x && double(float(m.to.y)) == m.to.y,
+                     qPrintable(QStringLiteral("(%1, %2)").arg(m.to.x, 0, 'g', 17).arg(m.to.y, 0, 'g', 17)));
+    }
+
     // A drop landing 1e-4 from ink's edge pushes it to about 1e-7 outside its rim (ρ²/2r); both
     // backends leave the width between them instead, with no crossing.
     void dropBesideInkLeavesTheWidth_data() { test::addBackendRows(); }
