@@ -39,9 +39,8 @@ int ReferenceSimulation::addRegion(const std::vector<Polygon>& contours)
     return m_regionCount++;
 }
 
-bool ReferenceSimulation::applyMap(const ExactMap& map)
+bool ReferenceSimulation::mapContours(const ExactMap& map)
 {
-    separateLayers();
     return m_tracker.applyMap(map, *m_flow, time());
 }
 

@@ -18,7 +18,6 @@ public:
     std::string backendName() const override { return "reference"; }
     const SimulationSettings& settings() const override { return m_settings; }
     int addRegion(const std::vector<Polygon>& contours) override;
-    bool applyMap(const ExactMap& map) override;
     void stylus(Vec2 from, Vec2 to, double radius, double duration) override;
     StepReport step(double dt) override;
     double time() const override { return m_flow->time(); }
@@ -38,6 +37,7 @@ public:
 protected:
     void growTargetAreasAround(Vec2 p, double area) override { m_tracker.growTargetAreasAround(p, area); }
     bool pushOutward(Vec2 center, double radius) override;
+    bool mapContours(const ExactMap& map) override;
     void separateLayers(std::optional<Window> within = std::nullopt) override;
 
 private:

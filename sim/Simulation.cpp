@@ -140,6 +140,15 @@ DropReport Simulation::drop(Vec2 center, double radius)
     return report;
 }
 
+bool Simulation::applyMap(const ExactMap& map)
+{
+    separateLayers();
+    const bool refined = mapContours(map);
+    separateLayers();
+    m_layersPressed = 1.0;  // all the ink was widened just now
+    return refined;
+}
+
 void Simulation::drive(const BodyForce& force)
 {
     if (settings().flow != SimulationSettings::FlowType::Fluid)

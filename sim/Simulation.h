@@ -63,7 +63,7 @@ public:
     // A tool's exact map (sim/ExactMap.h: a comb, a circular comb, a swirl) applied to every
     // contour at once and depicted within tracking.chordTolerance; the fluid is untouched. False
     // when refinement stopped at max_vertices.
-    virtual bool applyMap(const ExactMap& map) = 0;
+    bool applyMap(const ExactMap& map);
     // The stylus moved from `from` to `to` during `duration` seconds; acts during the next step.
     // Only a fluid flow responds.
     virtual void stylus(Vec2 from, Vec2 to, double radius, double duration) = 0;
@@ -145,10 +145,13 @@ protected:
     // when refinement stopped at max_vertices).
     virtual void growTargetAreasAround(Vec2 p, double area) = 0;
     virtual bool pushOutward(Vec2 center, double radius) = 0;
+    // The backend part of applyMap(): every contour moved by the map, refined under it.
+    virtual bool mapContours(const ExactMap& map) = 0;
     // Layers between two contours widened to the pinch width (sim/Separation.h), everywhere or
-    // within a window: before every exact map (it presses layers anywhere), and around every drop
-    // before and after it (it presses the layers near it, and leaves ink a hair from its centre a
-    // hair outside its rim). Not in the steps: there the moves cost marbling a third of its time
+    // within a window: around every exact map and every drop, before and after it. A map or a
+    // drop presses layers (a map anywhere, a drop near it), and a drop leaves ink a hair from its
+    // centre a hair outside its rim; a layer pressed under two float spacings is one a device's
+    // next refinement can cross. Not in the steps: there the moves cost marbling a third of its time
     // (the refinement works the little bumps they leave), and flow presses layers gradually.
     virtual void separateLayers(std::optional<Window> within = std::nullopt) = 0;
 };

@@ -59,9 +59,8 @@ int OpenClSimulation::addRegion(const std::vector<Polygon>& contours)
     return m_regionCount++;
 }
 
-bool OpenClSimulation::applyMap(const ExactMap& map)
+bool OpenClSimulation::mapContours(const ExactMap& map)
 {
-    separateLayers();
     return m_contours->applyMap(map, binding(m_time, m_time));
 }
 
