@@ -43,7 +43,9 @@ void splitEdges(Contour& c, const std::vector<std::size_t>& edges, const ExactMo
         std::optional<double> s = motion.crease ? motion.crease(a, b) : std::nullopt;
         if (!s || !(*s > 0.0 && *s < 1.0))
             s = 0.5;
-        const Vec2 start = storedPosition(a + *s * (b - a), floatPositions);
+        // Only the position is rounded for a device: a pre-image rounded too would, once its chord
+        // is a float spacing long, be one of its ends, and the rounds would stop closing in.
+        const Vec2 start = a + *s * (b - a);
         out.positions.push_back(storedPosition(motion.map(start), floatPositions));
         out.previous.push_back(start);
         out.spacing.push_back(std::min(c.spacing[i], c.spacing[j]));

@@ -13,9 +13,9 @@
 namespace vf::sim {
 
 // Splits crossed chords of `contours` after `motion` (each vertex's `previous` its pre-image), in
-// rounds until none is left or maxCrossedChordRounds have run. `floatPositions`: the new vertices
-// are rounded to float, as a device stores them, before they are checked. Returns how many vertices
-// were inserted. A crossing the contours had before the motion is left alone.
+// rounds until none is left or maxCrossedChordRounds have run. `floatPositions`: the new vertices'
+// positions are rounded to float, as a device stores them, before they are checked. Returns how
+// many vertices were inserted. A crossing the contours had before the motion is left alone.
 std::size_t splitCrossedChords(std::vector<Contour>& contours, const ExactMotion& motion, bool floatPositions);
 
 inline constexpr int maxCrossedChordRounds = 64;

@@ -106,11 +106,15 @@ private slots:
         QTest::addColumn<double>("gap");
         const sim::ExactMap wavy = sim::Comb{{0.1, 0.5}, {0.4, 0.5}, 4, 0.25, 0.03, 0.04, 0.3, 1.0};
         const sim::ExactMap circular = sim::CircularComb{{0.5, 0.5}, 0.12, 3, 0.125, 0.02, 0.8};
+        // The wavy comb with tines 30 times as sharp: a shear of 300 at each, which splits chords
+        // down to a float spacing on OpenCL.
+        const sim::ExactMap sharp = sim::Comb{{0.1, 0.5}, {0.4, 0.5}, 4, 0.25, 0.001, 0.04, 0.3, 1.0};
         // Double positions hold a gap far under the chord tolerance; float ones (OpenCL) resolve
         // no gap under a float spacing (6e-8 here), so the device's rows keep five of them.
         for (const auto& [backend, gap] : {std::pair(u"reference"_qs, 3e-8), std::pair(u"opencl"_qs, 3e-7)}) {
             QTest::newRow(qPrintable(backend + u" wavy comb"_qs)) << backend << wavy << gap;
             QTest::newRow(qPrintable(backend + u" circular comb"_qs)) << backend << circular << gap;
+            QTest::newRow(qPrintable(backend + u" sharp comb"_qs)) << backend << sharp << gap;
         }
     }
     // Six bands stacked `gap` apart, under the chord tolerance, through a map.
