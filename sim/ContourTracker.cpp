@@ -410,9 +410,14 @@ ExactMotion exactMotion(const ExactMap& map, double chordTolerance)
             chordTolerance, true};
 }
 
+ExactMotion exactMotion(const DropPush& push, double chordTolerance)
+{
+    return {push, {}, chordTolerance};
+}
+
 bool ContourTracker::drop(const DropPush& push, const Flow& flow, double t)
 {
-    return applyMotion({push, {}, m_settings.chordTolerance}, flow, t);
+    return applyMotion(exactMotion(push, m_settings.chordTolerance), flow, t);
 }
 
 bool ContourTracker::applyMap(const ExactMap& map, const Flow& flow, double t)

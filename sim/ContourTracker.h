@@ -40,6 +40,8 @@ struct ExactMotion {
 
 // A tool's map as an exact motion, for refinement within `chordTolerance`; it keeps areas.
 ExactMotion exactMotion(const ExactMap& map, double chordTolerance);
+// A drop's push as an exact motion: smooth (no crease), and it adds the drop's area.
+ExactMotion exactMotion(const DropPush& push, double chordTolerance);
 
 class ContourTracker {
 public:

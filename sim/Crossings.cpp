@@ -79,21 +79,21 @@ int orientation(Vec2 a, Vec2 b, Vec2 c)
     return sum.sign();
 }
 
+bool properlyCross(Vec2 a, Vec2 b, Vec2 c, Vec2 d)
+{
+    const int d1 = orientation(a, b, c), d2 = orientation(a, b, d);
+    if (d1 == 0 || d2 == 0 || d1 == d2)
+        return false;
+    const int d3 = orientation(c, d, a), d4 = orientation(c, d, b);
+    return d3 != 0 && d4 != 0 && d3 != d4;
+}
+
 namespace {
 
 struct Segment {
     Vec2 a, b;
     std::uint32_t polygon, index, count;
 };
-
-bool properlyIntersect(const Segment& s, const Segment& t)
-{
-    const int d1 = orientation(s.a, s.b, t.a), d2 = orientation(s.a, s.b, t.b);
-    if (d1 == 0 || d2 == 0 || d1 == d2)
-        return false;
-    const int d3 = orientation(t.a, t.b, s.a), d4 = orientation(t.a, t.b, s.b);
-    return d3 != 0 && d4 != 0 && d3 != d4;
-}
 
 bool boxesOverlap(const Segment& s, const Segment& t)
 {
@@ -225,7 +225,7 @@ std::vector<EdgeCrossing> findOutlineCrossings(const std::vector<Outline>& outli
 {
     std::vector<EdgeCrossing> crossings;
     const auto meet = [&crossings](const Segment& s, const Segment& t) {
-        if (!properlyIntersect(s, t))
+        if (!properlyCross(s.a, s.b, t.a, t.b))
             return false;
         const bool sFirst = s.polygon < t.polygon || (s.polygon == t.polygon && s.index < t.index);
         const Segment& a = sFirst ? s : t;

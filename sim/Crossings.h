@@ -14,6 +14,9 @@ namespace vf::sim {
 // exact expansion arithmetic when the filter cannot decide), so a crossing is never missed or
 // invented by rounding.
 int orientation(Vec2 a, Vec2 b, Vec2 c);
+// Whether segments a–b and c–d properly cross: at one point, each end of either strictly on one
+// side of the other (exact, through orientation).
+bool properlyCross(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 // Two edges whose interiors cross at one point, each on either side of the other (touching and
 // collinear overlaps are not proper crossings).

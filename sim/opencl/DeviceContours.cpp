@@ -994,7 +994,7 @@ bool DeviceContours::advect(const FlowBinding& flow, bool startSampled)
 bool DeviceContours::drop(Vec2 center, double radius, const FlowBinding& flow)
 {
     return guarded([&] {
-        const ExactMotion onHost{DropPush{center, radius}, {}, m->settings.chordTolerance};
+        const ExactMotion onHost = exactMotion(DropPush{center, radius}, m->settings.chordTolerance);
         return m->move(flow, m->mapMotion(motionDrop, {{center.x, center.y, radius, 0.0}}, {}), false, &onHost);
     });
 }
