@@ -151,8 +151,8 @@ protected:
     // within a window: around every exact map and every drop, before and after it. A map or a
     // drop presses layers (a map anywhere, a drop near it), and a drop leaves ink a hair from its
     // centre a hair outside its rim; a layer pressed under two float spacings is one a device's
-    // next refinement can cross. Not in the steps: there the moves cost marbling a third of its time
-    // (the refinement works the little bumps they leave), and flow presses layers gradually.
+    // next refinement can cross. Not in the steps: there the moves cost marbling a third of its
+    // time (the refinement works the little bumps they leave), and flow presses layers gradually.
     virtual void separateLayers(std::optional<Window> within = std::nullopt) = 0;
 };
 
