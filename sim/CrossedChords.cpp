@@ -16,7 +16,7 @@ bool preImagesCross(const std::vector<Contour>& contours, const EdgeCrossing& x)
     };
     const auto [a, b] = edge(x.polygonA, x.edgeA);
     const auto [c, d] = edge(x.polygonB, x.edgeB);
-    return orientation(a, b, c) * orientation(a, b, d) < 0 && orientation(c, d, a) * orientation(c, d, b) < 0;
+    return properlyCross(a, b, c, d);
 }
 
 // Inserts a vertex into each of `edges` (sorted, distinct) of c: at the crease inside the edge's

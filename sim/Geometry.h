@@ -62,6 +62,7 @@ double squaredDistanceToSegment(Vec2 p, Vec2 a, Vec2 b);
 // p as a store keeps it: in single precision (a device's), the nearest position a pair of floats
 // holds, so that what the host checks is what the device will keep.
 Vec2 storedPosition(Vec2 p, bool singlePrecision);
+
 // Where w, linear from wa to wb over [0, 1], passes strictly a whole number in [0, last], the one
 // nearest the middle, as the fraction there: where a segment crosses one of a map's creases
 // (a comb's tines, numbered by w).
