@@ -164,7 +164,7 @@ public:
     bool removalSweepsInk(int v) const
     {
         const int a = m_before[v], b = m_next[v];
-        return m_grid.anyInside(m_position[a], m_position[v], m_position[b]);
+        return m_grid.anyInside(m_position[a], m_position[v], m_position[b], VertexGrid::Change::RemovePb);
     }
 
     // Whether fraction s of the edge after a lies farther from both its ends, at the start of the
@@ -225,11 +225,12 @@ public:
         if (removalSweepsInk(v))
             return false;
         m_grid.erase(m_position[v]);
-        if (m_grid.anyInside(pa, x, pb)) {
+        m_grid.insert(x);
+        if (m_grid.anyInside(pa, x, pb, VertexGrid::Change::InsertPb)) {
+            m_grid.erase(x);
             m_grid.insert(m_position[v]);
             return false;
         }
-        m_grid.insert(x);
         m_previous[v] = at(s);
         m_position[v] = x;
         m_spacing[v] = dv;

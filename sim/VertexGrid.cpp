@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -71,17 +72,25 @@ void VertexGrid::erase(Vec2 p)
         }
 }
 
-bool VertexGrid::anyInside(Vec2 pa, Vec2 pb, Vec2 pc) const
+bool VertexGrid::anyInside(Vec2 pa, Vec2 pb, Vec2 pc, Change change) const
 {
     const int turn = orientation(pa, pb, pc);
     const Vec2 low = glm::min(pa, glm::min(pb, pc)), high = glm::max(pa, glm::max(pb, pc));
+    // How many vertices lie at each corner's place: the corners themselves, and any others.
+    const std::array<Vec2, 3> corners{pa, pb, pc};
+    std::array<int, 3> atCorner{};
     for (int y = row(low.y); y <= row(high.y); ++y)
         for (int x = column(low.x); x <= column(high.x); ++x)
             for (std::uint32_t k = m_head[std::size_t(y) * std::size_t(m_columns) + std::size_t(x)]; k != none;
                  k = m_entries[k].next) {
                 const Vec2 p = m_entries[k].position;
-                if (p.x < low.x || p.x > high.x || p.y < low.y || p.y > high.y || p == pa || p == pb || p == pc)
+                if (p.x < low.x || p.x > high.x || p.y < low.y || p.y > high.y)
                     continue;
+                if (p == pa || p == pb || p == pc) {
+                    for (std::size_t c = 0; c < 3; ++c)
+                        atCorner[c] += p == corners[c];
+                    continue;
+                }
                 const int ab = orientation(pa, pb, p), bc = orientation(pb, pc, p), ca = orientation(pc, pa, p);
                 // A degenerate triangle (turn 0) is a segment: p lies in it when on that line.
                 const bool inside = turn != 0 ? ab * turn >= 0 && bc * turn >= 0 && ca * turn >= 0
@@ -89,7 +98,10 @@ bool VertexGrid::anyInside(Vec2 pa, Vec2 pb, Vec2 pc) const
                 if (inside)
                     return true;
             }
-    return false;
+    auto another = [&](std::size_t c) {
+        return atCorner[c] > std::count(corners.begin(), corners.end(), corners[c]);
+    };
+    return another(1) || (change == Change::InsertPb && (another(0) || another(2)));
 }
 
 } // namespace vf::sim

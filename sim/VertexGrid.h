@@ -19,11 +19,18 @@ public:
     // Removes a vertex at p (vertices at one place are alike to the searches).
     void erase(Vec2 p);
 
-    // Whether a vertex other than those at pa, pb and pc lies in the closed triangle pa, pb, pc
-    // (exact predicates). Where none does, and no edge crosses pa–pb or pb–pc, no edge can cross
-    // pa–pc either: it would have to enter the triangle and leave it through a side that no edge
-    // crosses, or end inside it.
-    bool anyInside(Vec2 pa, Vec2 pb, Vec2 pc) const;
+    // What a sweep check is about: joining pa–pc in place of pa–pb–pc (pb removed), or pa–pb–pc in
+    // place of pa–pc (pb inserted).
+    enum class Change { RemovePb, InsertPb };
+    // Whether a vertex other than the triangle's own three lies in the closed triangle pa, pb, pc
+    // (exact predicates); each corner must be in the grid, and stands for one vertex there. Another
+    // vertex at pb's place counts, as one at pa's or pc's does for an insertion: a contour touching
+    // itself or another there, whose edges may leave that corner into the triangle and out across
+    // a new edge (a removal's pa–pc shares an end with those at pa and pc, so cannot cross their
+    // edges). Where none does, and no edge crosses pa–pb or pb–pc, no edge can cross pa–pc either:
+    // it would have to enter the triangle and leave it through a side that no edge crosses, or end
+    // inside it; and the same the other way round.
+    bool anyInside(Vec2 pa, Vec2 pb, Vec2 pc, Change change) const;
 
 private:
     static constexpr std::uint32_t none = ~std::uint32_t(0);

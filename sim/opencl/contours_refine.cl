@@ -405,12 +405,15 @@ VF_INLINE float turning(float2 before, float2 at, float2 after)
 }
 
 // The reference's VertexGrid::anyInside on the sweep grid (sweepGridPass), built on the positions
-// this colour's pass starts from (DeviceContours::Impl::collapsePass): whether a vertex, other than those at a, b
-// and c and at `skip`, lies in the closed triangle a, b, c. Removals of one pass, each checked
-// against the same positions, cannot cross each other's new edges: two triangles that meet with
-// no corner of one inside the other have two pairs of crossing sides. In float a point counts as
-// outside only where one side's sign is sure against the other two's rounding, and a triangle over
-// more than VF_SWEEP_CELLS cells each way sweeps ink: an unsure case keeps the contour as it is.
+// this colour's pass starts from (DeviceContours::Impl::collapsePass): whether a vertex lies in the
+// closed triangle a, x, b other than a, b and v, the vertex removed (x = v) or moved (a recentring's
+// new place x is not in the grid). Another vertex at v's place counts, as one at a's or b's does for
+// a recentring: a contour touching itself or another there, whose edges may leave that corner
+// into the triangle and out across a new edge. Removals of one pass, each checked against the same
+// positions, cannot cross each other's new edges: two triangles that meet with no corner of one
+// inside the other have two pairs of crossing sides. In float a point counts as outside only where
+// one side's sign is sure against the other two's rounding, and a triangle over more than
+// VF_SWEEP_CELLS cells each way sweeps ink: an unsure case keeps the contour as it is.
 #define SWEEP_ARGS                                                                                 \
     GRID_ARGS, __global const uint *bucketStart, __global const float2 *entries, __global const float2 *overflow, \
         uint overflowCount
@@ -510,32 +513,61 @@ VF_INLINE bool surelyOutside(float2 a, float2 b, float2 c, float2 p)
     return left && right;
 }
 
-VF_INLINE bool inkAt(float2 p, float2 low, float2 high, float2 a, float2 b, float2 c, float2 skip)
+// The places of the three vertices a sweep expects in the grid (a, b and the one removed or
+// moved), and how many entries it has met at each.
+typedef struct {
+    float2 place[3];
+    uint met[3];
+} OwnVertices;
+
+// Whether entry p is ink for the triangle a, x, b; an entry at an own vertex's place is counted
+// instead.
+VF_INLINE bool inkAt(float2 p, float2 low, float2 high, float2 a, float2 x, float2 b, OwnVertices *own)
 {
-    if (any(p < low) || any(p > high) || all(p == a) || all(p == b) || all(p == c) || all(p == skip))
+    if (any(p < low) || any(p > high))
         return false;
-    return !surelyOutside(a, b, c, p);
+    bool ownPlace = false;
+    for (int k = 0; k < 3; ++k)
+        if (all(p == own->place[k])) {
+            ++own->met[k];
+            ownPlace = true;
+        }
+    return !ownPlace && !surelyOutside(a, x, b, p);
 }
 
-VF_INLINE bool sweepsInk(SWEEP_ARGS, float2 a, float2 b, float2 c, float2 skip)
+// Whether more entries lie at own vertex k's place than own vertices do.
+VF_INLINE bool anotherAt(const OwnVertices *own, int k)
 {
-    const float2 low = fmin(a, fmin(b, c)), high = fmax(a, fmax(b, c));
+    uint owners = 0;
+    for (int j = 0; j < 3; ++j)
+        owners += all(own->place[j] == own->place[k]) ? 1u : 0u;
+    return own->met[k] > owners;
+}
+
+// Whether the triangle a, x, b sweeps ink, where v, between a and b, is removed (x = v) or moved
+// to x.
+VF_INLINE bool sweepsInk(SWEEP_ARGS, float2 a, float2 x, float2 b, float2 v)
+{
+    const float2 low = fmin(a, fmin(x, b)), high = fmax(a, fmax(x, b));
     const int x0 = (int)floor(low.x / cellSize), x1 = (int)floor(high.x / cellSize);
     const int y0 = (int)floor(low.y / cellSize), y1 = (int)floor(high.y / cellSize);
     if (x1 - x0 >= VF_SWEEP_CELLS || y1 - y0 >= VF_SWEEP_CELLS)
         return true;
+    OwnVertices own = {{a, b, v}, {0, 0, 0}};
     const int columnMask = (1 << columnBits) - 1, rowMask = (1 << rowBits) - 1;
-    for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-            const uint bucket = ((uint)(y & rowMask) << columnBits) + (uint)(x & columnMask);
+    for (int row = y0; row <= y1; ++row)
+        for (int column = x0; column <= x1; ++column) {
+            const uint bucket = ((uint)(row & rowMask) << columnBits) + (uint)(column & columnMask);
             for (uint k = bucketStart[bucket], end = bucketStart[bucket + 1]; k < end; ++k)
-                if (inkAt(entries[k], low, high, a, b, c, skip))
+                if (inkAt(entries[k], low, high, a, x, b, &own))
                     return true;
         }
     for (uint k = 0; k < overflowCount; ++k)
-        if (inkAt(overflow[k], low, high, a, b, c, skip))
+        if (inkAt(overflow[k], low, high, a, x, b, &own))
             return true;
-    return false;
+    // Another vertex at a's or b's place shares an end with a removal's new edge a–b, which so
+    // cannot cross its edges, but not with a recentring's x–b or a–x.
+    return anotherAt(&own, 2) || (any(x != v) && (anotherAt(&own, 0) || anotherAt(&own, 1)));
 }
 
 // *leavesBucket: a recentring takes v into another bucket of the sweep grid.

@@ -224,8 +224,10 @@ private slots:
     // its curve than two roundings of its coordinates, whatever the tolerance, and the inverse
     // widens that by the map's shear (up to tenfold across the comb's tines, more for a wavy comb
     // and at a circular comb's outer tine). Measured, reference and OpenCL: areas 2.7e-8 to 3e-7 and
-    // 4.7e-7 to 6.6e-7; returns: comb 9.4e-8 and 2.4e-6, wavy 1.7e-7 and 5.7e-6, circular 1.8e-7
-    // and 1.4e-5, swirl 4.3e-8 and 6.9e-7.
+    // 4.7e-7 to 6.6e-7; returns: comb 9.4e-8 and 2.4e-6, wavy 1.7e-7 and 2.5e-5, circular 1.8e-7
+    // and 1.4e-5, swirl 4.3e-8 and 6.9e-7. OpenCL's wavy comb presses vertices onto shared float
+    // places, and collapse keeps a vertex where another lies at its place (the sweep check); while
+    // it removed those, the wavy comb returned within 5.7e-6.
     void keepsAreasAndIsUndone_data()
     {
         test::addBackendColumn();
@@ -236,7 +238,7 @@ private slots:
             const bool reference = b == u"reference"_qs;
             QTest::newRow(qPrintable(b + u" comb"_qs)) << b << false << (reference ? 1e-6 : 3e-6) << u"comb"_qs;
             QTest::newRow(qPrintable(b + u" comb, area correction"_qs)) << b << true << (reference ? 1e-6 : 3e-6) << u"comb"_qs;
-            QTest::newRow(qPrintable(b + u" wavy comb"_qs)) << b << false << (reference ? 1e-6 : 1e-5) << u"wavy comb"_qs;
+            QTest::newRow(qPrintable(b + u" wavy comb"_qs)) << b << false << (reference ? 1e-6 : 4e-5) << u"wavy comb"_qs;
             QTest::newRow(qPrintable(b + u" circular comb"_qs)) << b << false << (reference ? 1e-6 : 2e-5) << u"circular comb"_qs;
             QTest::newRow(qPrintable(b + u" swirl"_qs)) << b << false << (reference ? 1e-6 : 3e-6) << u"swirl"_qs;
         }
@@ -272,6 +274,7 @@ private slots:
         for (std::size_t c = 0; c < before.size(); ++c)
             worstReturn = std::max(worstReturn, sim::hausdorffDistance(undone[c], before[c]));
         qInfo("areas kept within %.2g, returned within %.2g", worstArea, worstReturn);
+        QCOMPARE(crossings(undone), std::size_t(0));
         QVERIFY2(worstReturn < returnTolerance, qPrintable(QString::number(worstReturn)));
     }
 
