@@ -1,5 +1,5 @@
 // Refinement (paper §3.1, §3.3) by stream compaction; the split and collapse passes share their
-// tile bookkeeping and vertex helpers, so they stay in one file (about 700 lines, with the
+// tile bookkeeping and vertex helpers, so they stay in one file (about 740 lines, with the
 // collapse's sweep grid; the seam for a split is that grid, from sweepGridPass to sweepsInk, which
 // only the collapse kernels call). Each pass decides, for every vertex at once, how many vertices it
 // becomes (a split edge: 1 + the vertices inserted after it; a collapse: 0 or 1), scans those

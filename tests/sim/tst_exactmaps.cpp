@@ -226,8 +226,8 @@ private slots:
     // and at a circular comb's outer tine). Measured, reference and OpenCL: areas 2.7e-8 to 3e-7 and
     // 4.7e-7 to 6.6e-7; returns: comb 9.4e-8 and 2.4e-6, wavy 1.7e-7 and 2.5e-5, circular 1.8e-7
     // and 1.4e-5, swirl 4.3e-8 and 6.9e-7. OpenCL's wavy comb presses vertices onto shared float
-    // places, and collapse keeps a vertex where another lies at its place (the sweep check); while
-    // it removed those, the wavy comb returned within 5.7e-6.
+    // places, where collapse keeps a vertex that another lies at (the sweep check): that alone
+    // widens its return fourfold.
     void keepsAreasAndIsUndone_data()
     {
         test::addBackendColumn();
