@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace vf::sim {
 
@@ -125,6 +126,48 @@ bool moveIsClean(const std::vector<std::vector<Vec2>>& positions, const EdgeGrid
     return true;
 }
 
+// How far vertex i of contour k, put at `at`, lies from the nearest other ink, as moved so far: an
+// edge of another contour, or of another part of its own (anotherPart); infinite beyond the grid's
+// reach (twice the width).
+double nearestOtherInk(const std::vector<std::vector<Vec2>>& positions, const EdgeGrid& grid, std::size_t k,
+                       std::size_t i, Vec2 at)
+{
+    double nearest = std::numeric_limits<double>::infinity();
+    grid.forEdgesNear(at, at, [&](EdgeGrid::Edge e) {
+        const std::vector<Vec2>& other = positions[e.contour];
+        const double distance = std::sqrt(squaredDistanceToSegment(at, other[e.from], other[after(e.from, other.size())]));
+        if (distance < nearest && (e.contour != k || anotherPart(other, i, e.from, distance)))
+            nearest = distance;
+    });
+    return nearest;
+}
+
+// The longest of the move, its half, its quarter and so on (to a few stored positions' spacing) that
+// moveIsClean allows and that leaves the vertex no nearer other ink (its own too) than it was. The
+// pushes are found from the positions before any move: in a stack of layers all thinner than the
+// width, the push away from the thinnest layer carries a vertex toward the next, whose vertices the
+// next layer's push may carry toward it, and both moves made whole could press that layer to
+// nothing; a push off another contour can carry a vertex onto another part of its own. Another layer
+// of the stack can also refuse the whole move (it would cross) and allow a part. A layer left a few
+// float spacings thin is crossed by the next rounding (a split's midpoint on a device).
+std::optional<Vec2> cleanPartOf(const std::vector<std::vector<Vec2>>& positions, const EdgeGrid& grid,
+                                const VertexMove& m, bool singlePrecision)
+{
+    constexpr int parts = 12;
+    const Vec2 from = positions[m.contour][m.vertex];
+    const double before = nearestOtherInk(positions, grid, m.contour, m.vertex, from);
+    double share = 1.0;
+    for (int part = 0; part < parts; ++part, share *= 0.5) {
+        const Vec2 to = part == 0 ? m.to : storedPosition(from + share * (m.to - from), singlePrecision);
+        if (to == from)
+            break;
+        if (nearestOtherInk(positions, grid, m.contour, m.vertex, to) >= before &&
+            moveIsClean(positions, grid, m.contour, m.vertex, to))
+            return to;
+    }
+    return std::nullopt;
+}
+
 // The window grown by the longest edge at a vertex inside it: the edges of a vertex that moves
 // reach no farther, so every edge they could meet is among those of the grown window.
 Window withEdgesOf(const std::vector<Outline>& contours, Window window)
@@ -169,9 +212,9 @@ std::vector<VertexMove> findSeparations(const std::vector<Outline>& contours, bo
     for (const Outline& c : contours)
         moved.emplace_back(c.begin(), c.end());
     for (const VertexMove& m : wanted)
-        if (moveIsClean(moved, grid, m.contour, m.vertex, m.to)) {
-            moved[m.contour][m.vertex] = m.to;
-            moves.push_back(m);
+        if (const std::optional<Vec2> to = cleanPartOf(moved, grid, m, singlePrecision)) {
+            moved[m.contour][m.vertex] = *to;
+            moves.push_back({m.contour, m.vertex, *to});
         }
     return moves;
 }

@@ -16,8 +16,9 @@
 namespace vf::sim {
 
 // Where a vertex comes within the pinch width (sim/Pinches.h) of an edge of another contour, it is
-// moved straight away from that edge to the width (at most one width in all), if its two edges,
-// so moved, meet no other edge (exact predicates) and no other part of its own contour is that near.
+// moved straight away from that edge to the width (at most one width in all), if no other part of its
+// own contour is that near, as far along that move (all of it, half, a quarter…) as its two edges,
+// so moved, meet no other edge (exact predicates) and it comes no nearer other ink.
 struct VertexMove {
     std::uint32_t contour = 0, vertex = 0;
     Vec2 to{0.0};

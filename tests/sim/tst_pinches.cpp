@@ -172,6 +172,28 @@ private slots:
         QVERIFY(apart == before);
     }
 
+    // Nested inks (drops within drops) stacked at the top, 2.4e-6, 4.7e-6 and 2.4e-6 apart, each
+    // within the width (6.9e-6 here) of its neighbours only: each middle side is pushed off its
+    // nearer neighbour toward the other middle side, and the two pushes made whole would leave
+    // 1e-7 between them. No layer ends thinner than the thinnest was, and the outer two widen.
+    void stackedLayersAreNotPressedThinner()
+    {
+        const double tops[] = {0.9, 0.9 - 2.4e-6, 0.9 - 7.1e-6, 0.9 - 9.5e-6};
+        std::vector<Contour> contours;
+        for (int k = 0; k < 4; ++k) {
+            const double in = 0.1 * k;
+            contours.push_back(tracked(outline({{0.1 + in, 0.1 + in}, {0.8 - in, 0.1 + in}, {0.8 - in, tops[k]}, {0.1 + in, tops[k]}}), k));
+        }
+        QVERIFY(sim::separateLayers(contours) > 0);
+        QCOMPARE(crossings(contours), std::size_t(0));
+        double gaps[3];
+        for (int k = 0; k < 3; ++k)
+            gaps[k] = gapBetween(contours[k].positions, contours[k + 1].positions);
+        const QByteArray shown = QStringLiteral("%1 %2 %3").arg(gaps[0]).arg(gaps[1]).arg(gaps[2]).toLatin1();
+        QVERIFY2(gaps[1] >= 2.4e-6 * (1.0 - 1e-9), shown.constData());
+        QVERIFY2(gaps[0] > 4e-6 && gaps[2] > 4e-6, shown.constData());
+    }
+
     // Moves meant for a device go where a float pair lies, so that what was checked is what the
     // device keeps (an optimiser once dropped the rounding, and the device's contours then crossed).
     void singlePrecisionMovesLandOnFloats()
