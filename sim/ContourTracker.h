@@ -85,7 +85,7 @@ public:
     void setPhaseClock(PhaseClock* clock) { m_clock = clock; }
 
 private:
-    bool applyMotion(const ExactMotion& motion, const Flow& flow, double t);
+    bool applyMotion(const ExactMotion& motion, const Flow& flow, double t, bool cutFirst = false);
     bool refineAll(const ExactMotion& motion, const Flow& flow, double t);
     // The area correction of every contour (docs/method.md, "Area correction"): a vertex with
     // another part of any contour within areaHoldDistance stays where it is.

@@ -198,6 +198,7 @@ struct DeviceContours::Impl {
     bool move(const FlowBinding& flow, const Motion& motion, bool startKnown = false,
               const ExactMotion* exact = nullptr);
     void splitCrossedChords(const ExactMotion& motion);
+    std::size_t cutPinches();
     void computeSpacing(const FlowBinding& flow);
     void findNearestOtherParts(const Grid& grid);
     void buildGrid(const Grid& grid);
@@ -469,6 +470,11 @@ bool DeviceContours::Impl::move(const FlowBinding& flow, const Motion& motion, b
         queue.enqueueFillBuffer(status, cl_uint(0), 0, statusWords * sizeof(cl_uint));
         launch(queue, advect, laneGroups(vertices), flow, motion, front.motion, cl_uint(vertices), startVelocity,
                cl_int(startKnown), status);
+    }
+    if (motion.kind == motionDrop) {  // as ContourTracker::drop
+        splitCrossedChords(*exact);
+        const PhaseClock::Scope timing(clock, Phase::Pinches);
+        cutPinches();
     }
     computeSpacing(flow);
     const bool withinBudget = refine(flow, motion);
@@ -1082,13 +1088,16 @@ void DeviceContours::Impl::splitCrossedChords(const ExactMotion& motion)
         place(contours, 0, 0);
 }
 
+// The search is on the host; the cuts are made on the device.
+std::size_t DeviceContours::Impl::cutPinches()
+{
+    const std::vector<ContourCut> cuts = findCuts(readOutlines().outlines, pinchGrid);
+    return cuts.empty() ? 0 : applyCuts(cuts);
+}
+
 std::size_t DeviceContours::cutPinches()
 {
-    return guarded([&] {
-        // The search is on the host; the cuts are made on the device.
-        const std::vector<ContourCut> cuts = findCuts(m->readOutlines().outlines, m->pinchGrid);
-        return cuts.empty() ? 0 : m->applyCuts(cuts);
-    });
+    return guarded([&] { return m->cutPinches(); });
 }
 
 std::size_t DeviceContours::separateLayers(std::optional<Window> within)

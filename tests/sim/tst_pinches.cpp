@@ -298,6 +298,28 @@ private slots:
         simulation->step(dt);
         QCOMPARE(simulation->contours().size(), std::size_t(2));
     }
+
+    // A drop's push can press a layer of one contour within a float spacing, and the refinement
+    // after it must not start there: such a neck is cut before it, not a check period later. (Here
+    // the neck is there before the drop, which lands far from it.)
+    void dropCutsBeforeRefining_data() { test::addBackendRows(); }
+    void dropCutsBeforeRefining()
+    {
+        QFETCH(QString, backend);
+        VF_REQUIRE_BACKEND(backend);
+        sim::SimulationSettings settings;
+        settings.flow = sim::SimulationSettings::FlowType::Analytic;
+        settings.tracking.maxSpacing = spacing;
+        auto simulation = test::makeBackend(backend, settings);
+        simulation->addRegion({dumbbell(1e-7)});
+        simulation->drop({0.5, 0.85}, 0.05);
+        const std::vector<sim::Contour> contours = simulation->contours();
+        QCOMPARE(contours.size(), std::size_t(3));  // the dumbbell's two squares and the drop
+        QCOMPARE(crossings(contours), std::size_t(0));
+        for (const Contour& c : contours)
+            if (c.region == 0)
+                QVERIFY(std::abs(sim::signedArea(c.positions) - 0.09) < 1e-5);
+    }
 };
 
 QTEST_APPLESS_MAIN(TestPinches)
