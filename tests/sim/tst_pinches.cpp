@@ -81,6 +81,17 @@ double gapBetween(const Polygon& a, const Polygon& b)
     return gap;
 }
 
+// A simulation in still water holding the dumbbell with a neck 1e-7 thick.
+std::unique_ptr<sim::Simulation> dumbbellInStillWater(const QString& backend)
+{
+    sim::SimulationSettings settings;
+    settings.flow = sim::SimulationSettings::FlowType::Analytic;
+    settings.tracking.maxSpacing = spacing;
+    auto simulation = test::makeBackend(backend, settings);
+    simulation->addRegion({dumbbell(1e-7)});
+    return simulation;
+}
+
 // The pinch width where the largest coordinate is `largest`.
 double pinchWidth(double largest)
 {
@@ -280,11 +291,7 @@ private slots:
     {
         QFETCH(QString, backend);
         VF_REQUIRE_BACKEND(backend);
-        sim::SimulationSettings settings;
-        settings.flow = sim::SimulationSettings::FlowType::Analytic;
-        settings.tracking.maxSpacing = spacing;
-        auto simulation = test::makeBackend(backend, settings);
-        simulation->addRegion({dumbbell(1e-7)});
+        const auto simulation = dumbbellInStillWater(backend);
         std::size_t cuts = 0;
         const double dt = 0.005;
         for (int k = 0; k * dt < 2 * sim::pinchCheckPeriod; ++k)
@@ -307,11 +314,7 @@ private slots:
     {
         QFETCH(QString, backend);
         VF_REQUIRE_BACKEND(backend);
-        sim::SimulationSettings settings;
-        settings.flow = sim::SimulationSettings::FlowType::Analytic;
-        settings.tracking.maxSpacing = spacing;
-        auto simulation = test::makeBackend(backend, settings);
-        simulation->addRegion({dumbbell(1e-7)});
+        const auto simulation = dumbbellInStillWater(backend);
         simulation->drop({0.5, 0.85}, 0.05);
         const std::vector<sim::Contour> contours = simulation->contours();
         QCOMPARE(contours.size(), std::size_t(3));  // the dumbbell's two squares and the drop
